@@ -1,0 +1,299 @@
+#include "model/axisym_model.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/error.h"
+
+namespace vs {
+
+namespace {
+
+constexpr double kTwoOverPi = 2.0 / std::numbers::pi;
+
+// Node radii of a meridian from the pole to `radius` with `n` elements whose lengths grow
+// geometrically so that last/first = grading.
+std::vector<double> graded_radii(double radius, int n, double grading) {
+  const double q = n > 1 ? std::pow(grading, 1.0 / (n - 1)) : 1.0;
+  std::vector<double> len(n);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    len[i] = std::pow(q, i);
+    sum += len[i];
+  }
+  std::vector<double> r(n + 1, 0.0);
+  for (int i = 0; i < n; ++i) r[i + 1] = r[i] + radius * len[i] / sum;
+  r[n] = radius;
+  return r;
+}
+
+}  // namespace
+
+AxisymModel::AxisymModel(const Scene& scene)
+    : scene_(scene),
+      rule_(simpson_rule(scene.numerics.thickness_points)),
+      hardening_(scene.material.hardening),
+      law_(scene.material.rate,
+           scene.numerics.strain_rate_cutoff * scene.process.punch_speed_mm_per_s /
+               scene.blank.radius_mm,
+           scene.material.r_value),
+      tools_(make_tools(scene)) {
+  if (scene.geometry != Geometry::kAxisymmetric) {
+    throw InputError(scene.source + ": the axisymmetric solver only runs axisymmetric scenes");
+  }
+  nominal_rate_ = scene.process.punch_speed_mm_per_s / scene.blank.radius_mm;
+  friction_velocity_ =
+      scene.numerics.friction_regularisation * scene.process.punch_speed_mm_per_s;
+  r0_ = graded_radii(scene.blank.radius_mm, scene.blank.elements, scene.blank.grading);
+  const double h0 = scene.blank.thickness_mm;
+  for (int e = 0; e + 1 < num_nodes(); ++e) {
+    l0_.push_back(r0_[e + 1] - r0_[e]);
+    volume_.push_back(std::numbers::pi * (r0_[e + 1] * r0_[e + 1] - r0_[e] * r0_[e]) * h0);
+  }
+  for (std::size_t i = 0; i < tools_.size(); ++i) {
+    if (tools_[i].is_punch()) punch_ = static_cast<int>(i);
+    if (tools_[i].kind() == ToolKind::kDie) die_ = static_cast<int>(i);
+  }
+  for (const ToolSpec& t : scene.tools) {
+    if (t.kind == ToolKind::kBlankHolder) {
+      has_holder_ = true;
+      holder_force_ = t.force_N;
+      holder_friction_ = t.friction;
+    }
+  }
+  if (punch_ < 0) throw InputError(scene.source + ": the scene has no punch");
+  if (has_holder_ && die_ < 0) throw InputError(scene.source + ": a blank holder needs a die");
+  if (has_holder_ && std::isinf(holder_friction_)) {
+    throw InputError(scene.source + ": blank holder friction cannot be sticking (inf)");
+  }
+}
+
+AxisymState AxisymModel::initial_state() const {
+  AxisymState s;
+  s.x.resize(num_nodes());
+  for (int i = 0; i < num_nodes(); ++i) s.x[i] = Eigen::Vector2d(r0_[i], 0.0);
+  s.thickness.assign(num_elements(), scene_.blank.thickness_mm);
+  s.eps_bar.assign(static_cast<std::size_t>(num_elements()) * rule_.zeta.size(), 0.0);
+  s.tool_offset.assign(tools_.size(), Eigen::Vector2d::Zero());
+  s.contact.resize(num_nodes());
+  s.v = Eigen::VectorXd::Zero(num_dofs());
+  return s;
+}
+
+void AxisymModel::place_tools(const AxisymState& s) {
+  for (std::size_t t = 0; t < tools_.size(); ++t) tools_[t].set_offset(s.tool_offset[t]);
+}
+
+void AxisymModel::freeze_material(const AxisymState& s, double dt_predicted) {
+  // Midpoint rule for the hardening seen by the velocity solve.
+  constexpr double kTheta = 0.5;
+  const std::size_t np = rule_.zeta.size();
+  sigma_y_.assign(num_elements(), std::vector<double>(np));
+  hardening_viscosity_.assign(num_elements(), std::vector<double>(np));
+  shear_viscosity_.assign(num_elements(), 0.0);
+  for (int e = 0; e < num_elements(); ++e) {
+    for (std::size_t k = 0; k < np; ++k) {
+      sigma_y_[e][k] = hardening_.flow_stress(s.eps_bar[e * np + k]);
+      hardening_viscosity_[e][k] = kTheta * hardening_.slope(s.eps_bar[e * np + k]) * dt_predicted;
+    }
+    // Transverse shear penalty: the viscosity of the section's mid point at the nominal rate
+    // (numerics.md section 3.4: keep transverse shear out of the flow rule).
+    const double sy = sigma_y_[e][np / 2];
+    shear_viscosity_[e] = law_.is_constant()
+                              ? law_.constant_mu()
+                              : law_.effective_stress(sy, nominal_rate_) / (3.0 * nominal_rate_);
+  }
+}
+
+Axisym2Geometry AxisymModel::geometry(const AxisymState& s, int e) const {
+  return {s.x[e].x(), s.x[e].y(), s.x[e + 1].x(), s.x[e + 1].y()};
+}
+
+double AxisymModel::node_thickness(const AxisymState& s, int node) const {
+  if (node == 0) return s.thickness.front();
+  if (node == num_nodes() - 1) return s.thickness.back();
+  return 0.5 * (s.thickness[node - 1] + s.thickness[node]);
+}
+
+Eigen::Matrix3d AxisymModel::frame(const AxisymState& s, int node) const {
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();
+  const NodeContact& c = s.contact[node];
+  if (c.tool < 0) return Q;
+  const Eigen::Vector2d n = c.normal;
+  const Eigen::Vector2d t(n.y(), -n.x());
+  Q(0, 0) = t.x();
+  Q(1, 0) = t.y();
+  Q(0, 1) = n.x();
+  Q(1, 1) = n.y();
+  return Q;
+}
+
+Eigen::VectorXd AxisymModel::to_local(const AxisymState& s, const Eigen::VectorXd& v) const {
+  Eigen::VectorXd out = v;
+  for (int i = 0; i < num_nodes(); ++i) {
+    if (s.contact[i].tool >= 0) out.segment<3>(3 * i) = frame(s, i).transpose() * v.segment<3>(3 * i);
+  }
+  return out;
+}
+
+Eigen::VectorXd AxisymModel::to_global(const AxisymState& s, const Eigen::VectorXd& v) const {
+  Eigen::VectorXd out = v;
+  for (int i = 0; i < num_nodes(); ++i) {
+    if (s.contact[i].tool >= 0) out.segment<3>(3 * i) = frame(s, i) * v.segment<3>(3 * i);
+  }
+  return out;
+}
+
+void AxisymModel::prescribed(const AxisymState& s, std::vector<char>* mask,
+                             Eigen::VectorXd* values) const {
+  mask->assign(num_dofs(), 0);
+  *values = Eigen::VectorXd::Zero(num_dofs());
+  auto fix = [&](int node, int dof, double value) {
+    (*mask)[3 * node + dof] = 1;
+    (*values)(3 * node + dof) = value;
+  };
+  for (int i = 0; i < num_nodes(); ++i) {
+    const NodeContact& c = s.contact[i];
+    if (c.tool >= 0) {
+      const RigidTool& tool = tools_[c.tool];
+      const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
+      fix(i, 1, tool.velocity().dot(c.normal));
+      if (tool.sticking()) fix(i, 0, tool.velocity().dot(t));
+    }
+  }
+  // Axis of symmetry: no radial motion, no rotation (the contact normal there is vertical, so the
+  // local tangential dof is the radial one).
+  if (r0_.front() == 0.0) {
+    fix(0, 0, 0.0);
+    fix(0, 2, 0.0);
+  }
+  const int rim = num_nodes() - 1;
+  switch (scene_.blank.edge) {
+    case EdgeCondition::kClamped:
+      fix(rim, 2, 0.0);
+      [[fallthrough]];
+    case EdgeCondition::kPinned:
+      fix(rim, 0, 0.0);
+      fix(rim, 1, 0.0);
+      break;
+    case EdgeCondition::kFree:
+      break;
+  }
+}
+
+void AxisymModel::update_holder(AxisymState* s) const {
+  for (auto& c : s->contact) c.holder_force_N = 0.0;
+  if (!has_holder_) return;
+  double total_area = 0.0;
+  std::vector<double> area(num_nodes(), 0.0);
+  for (int i = 0; i < num_nodes(); ++i) {
+    if (s->contact[i].tool != die_ || !s->contact[i].on_die_face) continue;
+    double half = 0.0;
+    if (i > 0) half += 0.5 * (s->x[i] - s->x[i - 1]).norm();
+    if (i + 1 < num_nodes()) half += 0.5 * (s->x[i + 1] - s->x[i]).norm();
+    area[i] = 2.0 * std::numbers::pi * s->x[i].x() * half;
+    total_area += area[i];
+  }
+  if (total_area <= 0.0) return;
+  for (int i = 0; i < num_nodes(); ++i) {
+    s->contact[i].holder_force_N = holder_force_ * area[i] / total_area;
+  }
+}
+
+void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
+                                 double* stiff_secant, double* stiff_tangent,
+                                 double* potential) const {
+  const NodeContact& c = s.contact[node];
+  const RigidTool& tool = tools_[c.tool];
+  // Coulomb limit: tool coefficient times the lagged normal reaction, plus the holder's share.
+  double limit = tool.friction() * std::max(c.normal_force_N, 0.0);
+  if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
+  const double v0 = friction_velocity_;
+  const double a = vt_rel / v0;
+  const double at = std::atan(a);
+  *force = limit * kTwoOverPi * at;
+  *stiff_secant = std::abs(a) < 1e-8 ? limit * kTwoOverPi / v0 : *force / vt_rel;
+  *stiff_tangent = limit * kTwoOverPi / (v0 * (1.0 + a * a));
+  *potential = limit * kTwoOverPi * (vt_rel * at - 0.5 * v0 * std::log1p(a * a));
+}
+
+void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local,
+                           StiffnessKind kind, AxisymSystem* out, double tangent_weight) const {
+  const int nn = num_nodes();
+  const Eigen::VectorXd v = to_global(s, v_local);
+  const bool want_k = kind != StiffnessKind::kNone;
+  if (want_k) {
+    if (out->K.blocks() != nn) out->K.resize(nn);
+    out->K.set_zero();
+  }
+  out->element_force = Eigen::VectorXd::Zero(num_dofs());
+  out->external_force = Eigen::VectorXd::Zero(num_dofs());
+  out->potential = 0.0;
+
+  Axisym2Output eo;
+  for (int e = 0; e < num_elements(); ++e) {
+    Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
+    const Vec6 d = v.segment<6>(3 * e);
+    axisym2_evaluate(geometry(s, e), sec, rule_, law_, d, kind, &eo, tangent_weight);
+    out->element_force.segment<6>(3 * e) += eo.force;
+    out->potential += eo.potential;
+    if (want_k) {
+      out->K.diag(e) += eo.stiffness.block<3, 3>(0, 0);
+      out->K.diag(e + 1) += eo.stiffness.block<3, 3>(3, 3);
+      out->K.lower(e) += eo.stiffness.block<3, 3>(3, 0);
+    }
+  }
+  for (int i = 0; i < nn; ++i) {
+    out->external_force(3 * i + 1) += s.contact[i].holder_force_N;
+  }
+  out->potential -= out->external_force.dot(v);
+
+  // Residual and stiffness in the nodal frames.
+  Eigen::VectorXd r = out->element_force - out->external_force;
+  for (int i = 0; i < nn; ++i) {
+    if (s.contact[i].tool < 0) continue;
+    const Eigen::Matrix3d Q = frame(s, i);
+    r.segment<3>(3 * i) = Q.transpose() * r.segment<3>(3 * i);
+    if (want_k) {
+      out->K.diag(i) = Q.transpose() * out->K.diag(i) * Q;
+      if (i > 0) out->K.lower(i - 1) = Q.transpose() * out->K.lower(i - 1);
+      if (i + 1 < nn) out->K.lower(i) = out->K.lower(i) * Q;
+    }
+  }
+  // Regularised Coulomb friction on sliding contact nodes.
+  for (int i = 0; i < nn; ++i) {
+    const NodeContact& c = s.contact[i];
+    if (c.tool < 0 || tools_[c.tool].sticking()) continue;
+    const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
+    const double vt_rel = v_local(3 * i) - tools_[c.tool].velocity().dot(t);
+    double f, ks, kt, phi;
+    friction_terms(s, i, vt_rel, &f, &ks, &kt, &phi);
+    r(3 * i) += f;
+    out->potential += phi;
+    if (want_k) {
+      out->K.diag(i)(0, 0) += kind == StiffnessKind::kTangent ? ks + tangent_weight * (kt - ks) : ks;
+    }
+  }
+  std::vector<char> mask;
+  Eigen::VectorXd values;
+  prescribed(s, &mask, &values);
+  for (int k = 0; k < num_dofs(); ++k) {
+    if (!mask[k]) continue;
+    r(k) = 0.0;
+    if (want_k) out->K.fix_dof(k / 3, k % 3);
+  }
+  out->residual = std::move(r);
+}
+
+double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local) const {
+  AxisymSystem sys;
+  evaluate(s, v_local, StiffnessKind::kNone, &sys);
+  return sys.potential;
+}
+
+Eigen::Vector2d AxisymModel::node_force(const AxisymSystem& sys, int node) const {
+  return (sys.element_force - sys.external_force).segment<2>(3 * node);
+}
+
+}  // namespace vs

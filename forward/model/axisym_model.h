@@ -1,0 +1,130 @@
+// The axisymmetric viscous-shell model: meridian mesh, per-step state, and assembly of the
+// residual, the (secant or tangent) stiffness and the flow potential for a velocity field, with
+// contact nodes expressed in their nodal friction frames (paper section 4.4).
+//
+// Unknowns: 3 per node (u, w, beta) in the global frame, except at contact nodes, whose first two
+// unknowns are rotated into the tool frame (tangential v_t, normal v_n). A contact node's normal
+// velocity equals the tool's; its tangential velocity is free with a regularised Coulomb force
+// (arctan law, numerics.md section 3.5) from the lagged normal reaction, or equals the tool's for
+// sticking friction. Nodes on the axis have u = beta = 0.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "contact/rigid_tool.h"
+#include "element/axisym2.h"
+#include "material/hardening.h"
+#include "material/viscous_law.h"
+#include "scene/scene.h"
+#include "solver/block_tridiag.h"
+
+namespace vs {
+
+struct NodeContact {
+  int tool = -1;                 // index into tools, -1 = free
+  Eigen::Vector2d normal = Eigen::Vector2d::UnitY();  // from the tool into the sheet
+  double normal_force_N = 0.0;   // lagged normal reaction (compressive > 0), full 360 degrees
+  double holder_force_N = 0.0;   // blank-holder share pressing this node against the die face
+  bool on_die_face = false;      // touching the flat face of the die (the flange)
+};
+
+// Everything that changes from step to step.
+struct AxisymState {
+  double time_s = 0.0;
+  std::vector<Eigen::Vector2d> x;  // node coordinates (r, z) [mm]
+  std::vector<double> thickness;   // per element [mm]
+  std::vector<double> eps_bar;     // per element and thickness point (row-major)
+  std::vector<Eigen::Vector2d> tool_offset;  // per tool
+  std::vector<NodeContact> contact;          // per node
+  Eigen::VectorXd v;                         // last converged velocity (global frame)
+};
+
+// One evaluation of the discrete system in the nodal (friction) frames.
+struct AxisymSystem {
+  BlockTridiag K;             // stiffness with prescribed dofs replaced by identity
+  Eigen::VectorXd residual;   // at free dofs; zero at prescribed dofs
+  double potential = 0.0;     // flow potential (merit function of the line search)
+  Eigen::VectorXd element_force;  // f_el in the global frame (reactions = f_el - f_ext)
+  Eigen::VectorXd external_force; // f_ext in the global frame
+};
+
+class AxisymModel {
+ public:
+  explicit AxisymModel(const Scene& scene);
+
+  int num_nodes() const { return static_cast<int>(r0_.size()); }
+  int num_elements() const { return num_nodes() - 1; }
+  int num_dofs() const { return 3 * num_nodes(); }
+  const Scene& scene() const { return scene_; }
+  const std::vector<RigidTool>& tools() const { return tools_; }
+  const ThicknessRule& rule() const { return rule_; }
+  const ViscousLaw& law() const { return law_; }
+  const Hardening& hardening() const { return hardening_; }
+  double nominal_rate() const { return nominal_rate_; }
+  double punch_speed() const { return scene_.process.punch_speed_mm_per_s; }
+  double initial_length(int e) const { return l0_[e]; }
+  double initial_mid_radius(int e) const { return 0.5 * (r0_[e] + r0_[e + 1]); }
+  double initial_radius(int node) const { return r0_[node]; }
+  double initial_thickness() const { return scene_.blank.thickness_mm; }
+  double element_volume(int e) const { return volume_[e]; }
+  int punch_index() const { return punch_; }
+
+  AxisymState initial_state() const;
+
+  // Places the tools at the state's offsets (tools are shared, positions come from the state).
+  void place_tools(const AxisymState& s);
+
+  // Per-step material data: yield stress and hardening viscosity theta H dt per point (dt: the
+  // predicted step size), shear penalty per element.
+  void freeze_material(const AxisymState& s, double dt_predicted);
+
+  // Node frames: global = Q * local for the node's 3 unknowns.
+  Eigen::Matrix3d frame(const AxisymState& s, int node) const;
+  Eigen::VectorXd to_local(const AxisymState& s, const Eigen::VectorXd& v_global) const;
+  Eigen::VectorXd to_global(const AxisymState& s, const Eigen::VectorXd& v_local) const;
+
+  // Prescribed local dofs and their values; free dofs have mask false.
+  void prescribed(const AxisymState& s, std::vector<char>* mask, Eigen::VectorXd* values) const;
+
+  // Distributes the blank-holder force over the flange nodes on the die face.
+  void update_holder(AxisymState* s) const;
+
+  // Evaluates at the local-frame velocity `v_local`.
+  // kTangent blends secant and consistent tangent with `tangent_weight` in [0, 1].
+  void evaluate(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
+                AxisymSystem* out, double tangent_weight = 1.0) const;
+
+  // Potential only (line search).
+  double potential(const AxisymState& s, const Eigen::VectorXd& v_local) const;
+
+  // Per-node contact force on the sheet (global frame): f_el - f_ext at the node.
+  Eigen::Vector2d node_force(const AxisymSystem& sys, int node) const;
+
+  // Current element geometry and node thickness (average of neighbouring elements).
+  Axisym2Geometry geometry(const AxisymState& s, int e) const;
+  double node_thickness(const AxisymState& s, int node) const;
+
+ private:
+  void friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
+                      double* stiff_secant, double* stiff_tangent, double* potential) const;
+
+  Scene scene_;
+  ThicknessRule rule_;
+  Hardening hardening_;
+  ViscousLaw law_;
+  std::vector<RigidTool> tools_;
+  std::vector<double> r0_, l0_, volume_;
+  double nominal_rate_ = 1.0;    // punch speed / blank radius [1/s]
+  double friction_velocity_ = 1e-4;  // arctan regularisation velocity [mm/s]
+  int punch_ = -1, die_ = -1;
+  double holder_force_ = 0.0, holder_friction_ = 0.0;
+  bool has_holder_ = false;
+  // Frozen per step.
+  std::vector<std::vector<double>> sigma_y_;  // per element, per point
+  std::vector<std::vector<double>> hardening_viscosity_;  // per element, per point
+  std::vector<double> shear_viscosity_;       // per element
+};
+
+}  // namespace vs

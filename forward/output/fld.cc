@@ -1,0 +1,126 @@
+#include "output/fld.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "output/number_format.h"
+#include "output/profile_csv.h"
+
+namespace vs {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double at(const std::vector<double>& v, std::size_t i) { return i < v.size() ? v[i] : kNaN; }
+
+PrincipalStrains principal_at(const Profile& p, std::size_t i) {
+  return in_plane_principal(at(p.eps_meridional, i), at(p.eps_circumferential, i));
+}
+
+// Step number of each history entry, matched by punch travel (both come from the same double,
+// so equality is exact); history and steps are both in travel order, so one sweep suffices.
+std::vector<int> history_steps(const RunResult& result) {
+  std::vector<int> steps(result.history.size());
+  std::size_t k = 0;
+  for (std::size_t h = 0; h < result.history.size(); ++h) {
+    const double travel = result.history[h].punch_travel_mm;
+    while (k < result.steps.size() && result.steps[k].punch_travel_mm < travel) ++k;
+    const bool match = k < result.steps.size() && result.steps[k].punch_travel_mm == travel;
+    steps[h] = match ? result.steps[k].step : static_cast<int>(h);
+  }
+  return steps;
+}
+
+}  // namespace
+
+PrincipalStrains in_plane_principal(double eps_meridional, double eps_circumferential) {
+  if (std::isnan(eps_meridional) || std::isnan(eps_circumferential)) return {kNaN, kNaN};
+  return {std::max(eps_meridional, eps_circumferential),
+          std::min(eps_meridional, eps_circumferential)};
+}
+
+const Profile* final_state(const RunResult& result) {
+  const Profile* last_profile = result.profiles.empty() ? nullptr : &result.profiles.back();
+  const Profile* last_history = result.history.empty() ? nullptr : &result.history.back();
+  if (last_profile == nullptr) return last_history;
+  if (last_history == nullptr) return last_profile;
+  return last_history->punch_travel_mm > last_profile->punch_travel_mm ? last_history
+                                                                       : last_profile;
+}
+
+std::string fld_points_csv(const Profile* state) {
+  std::string out = "element,r0_mm,r_mm,eps_major,eps_minor,eps_thickness\n";
+  if (state == nullptr) return out;
+  const std::size_t n = profile_rows(*state);
+  for (std::size_t i = 0; i < n; ++i) {
+    const PrincipalStrains e = principal_at(*state, i);
+    out += fmt::format("{},{},{},{},{},{}\n", i, format_number(at(state->r0_mm, i)),
+                       format_number(at(state->r_mm, i)), format_number(e.major),
+                       format_number(e.minor), format_number(at(state->eps_thickness, i)));
+  }
+  return out;
+}
+
+std::vector<std::size_t> strain_path_elements(const Profile& state, std::size_t count) {
+  const std::size_t n = profile_rows(state);
+  std::vector<std::size_t> elements;
+  if (n == 0 || count == 0) return elements;
+  // Thinnest = smallest finite thickness (NaN never compares smaller).
+  std::size_t thinnest = 0;
+  double thinnest_mm = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < state.thickness_mm.size(); ++i) {
+    if (state.thickness_mm[i] < thinnest_mm) {
+      thinnest_mm = state.thickness_mm[i];
+      thinnest = i;
+    }
+  }
+  elements.push_back(thinnest);
+  const std::size_t others = std::min(count - 1, n);
+  for (std::size_t k = 0; k < others; ++k) {
+    elements.push_back(others == 1 ? 0 : k * (n - 1) / (others - 1));
+  }
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  return elements;
+}
+
+std::vector<StrainPath> strain_paths(const RunResult& result,
+                                     const std::vector<std::size_t>& elements) {
+  const std::vector<int> steps = history_steps(result);
+  const Profile* state = final_state(result);
+  std::vector<StrainPath> paths;
+  for (std::size_t element : elements) {
+    StrainPath path;
+    path.element = element;
+    path.r0_mm = state != nullptr ? at(state->r0_mm, element) : kNaN;
+    for (std::size_t h = 0; h < result.history.size(); ++h) {
+      const Profile& p = result.history[h];
+      if (element >= profile_rows(p)) continue;
+      const PrincipalStrains e = principal_at(p, element);
+      path.step.push_back(steps[h]);
+      path.punch_travel_mm.push_back(p.punch_travel_mm);
+      path.eps_major.push_back(e.major);
+      path.eps_minor.push_back(e.minor);
+    }
+    paths.push_back(std::move(path));
+  }
+  return paths;
+}
+
+std::string strain_paths_csv(const std::vector<StrainPath>& paths) {
+  std::string out = "step,punch_travel_mm,element,r0_mm,eps_major,eps_minor\n";
+  for (const StrainPath& path : paths) {
+    for (std::size_t k = 0; k < path.step.size(); ++k) {
+      out +=
+          fmt::format("{},{},{},{},{},{}\n", path.step[k], format_number(path.punch_travel_mm[k]),
+                      path.element, format_number(path.r0_mm), format_number(path.eps_major[k]),
+                      format_number(path.eps_minor[k]));
+    }
+  }
+  return out;
+}
+
+}  // namespace vs

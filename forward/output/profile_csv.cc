@@ -1,0 +1,60 @@
+#include "output/profile_csv.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "output/number_format.h"
+
+namespace vs {
+namespace {
+
+std::string cell(const std::vector<double>& v, std::size_t i) {
+  return i < v.size() ? format_number(v[i]) : std::string("nan");
+}
+
+std::string cell(const std::vector<int>& v, std::size_t i) {
+  return i < v.size() ? fmt::format("{}", v[i]) : std::string("nan");
+}
+
+}  // namespace
+
+std::string strains_file_name(double punch_travel_mm) {
+  return fmt::format("strains_travel_{:06.2f}mm.csv", punch_travel_mm);
+}
+
+std::vector<const Profile*> profile_stages(const RunResult& result) {
+  std::vector<const Profile*> stages;
+  for (const Profile& p : result.profiles) {
+    const bool repeat = std::any_of(stages.begin(), stages.end(), [&](const Profile* q) {
+      return q->punch_travel_mm == p.punch_travel_mm;
+    });
+    if (!repeat) stages.push_back(&p);
+  }
+  if (stages.empty() && !result.history.empty()) stages.push_back(&result.history.back());
+  return stages;
+}
+
+std::size_t profile_rows(const Profile& p) {
+  return std::max({p.r0_mm.size(), p.r_mm.size(), p.z_mm.size(), p.thickness_mm.size(),
+                   p.eps_meridional.size(), p.eps_circumferential.size(), p.eps_thickness.size(),
+                   p.eps_effective.size(), p.contact.size()});
+}
+
+std::string profile_csv(const Profile& p) {
+  std::string out = fmt::format("# punch_travel_mm={}\n", format_number(p.punch_travel_mm));
+  out +=
+      "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
+      "eps_effective,contact\n";
+  const std::size_t n = profile_rows(p);
+  for (std::size_t i = 0; i < n; ++i) {
+    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", cell(p.r0_mm, i), cell(p.r_mm, i),
+                       cell(p.z_mm, i), cell(p.thickness_mm, i), cell(p.eps_meridional, i),
+                       cell(p.eps_circumferential, i), cell(p.eps_thickness, i),
+                       cell(p.eps_effective, i), cell(p.contact, i));
+  }
+  return out;
+}
+
+}  // namespace vs

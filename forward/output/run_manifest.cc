@@ -1,0 +1,40 @@
+#include "output/run_manifest.h"
+
+#include "output/build_info.h"
+#include "output/run_summary.h"
+#include "output/scene_json.h"
+
+namespace vs {
+
+nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
+                                    const std::vector<std::string>& files) {
+  const RunSummary s = summarize_run(result);
+  nlohmann::ordered_json j;
+  j["program"] = {{"name", "vshell"},
+                  {"version", program_version()},
+                  {"git_describe", program_git_describe()},
+                  {"compiler", compiler_version()},
+                  {"eigen_version", eigen_version()}};
+  j["termination"] = s.termination;
+  j["message"] = s.message;
+  j["steps"] = s.steps;
+  j["total_iterations"] = s.total_iterations;
+  j["total_cutbacks"] = s.total_cutbacks;
+  j["timings"] = {{"total_s", result.timings.total_s},
+                  {"assembly_s", result.timings.assembly_s},
+                  {"linear_solve_s", result.timings.linear_solve_s},
+                  {"contact_s", result.timings.contact_s}};
+  // NaN (no step at all) becomes null in JSON.
+  j["final_punch_travel_mm"] = s.final_punch_travel_mm;
+  j["peak_punch_force_N"] = s.peak_punch_force_N;
+  j["punch_travel_at_peak_mm"] = s.punch_travel_at_peak_mm;
+  j["final_min_thickness_mm"] = s.final_min_thickness_mm;
+  j["final_thinnest_r0_mm"] = s.final_thinnest_r0_mm;
+  j["profiles"] = result.profiles.size();
+  j["history_entries"] = result.history.size();
+  j["scene"] = scene_to_json(scene);
+  j["files"] = files;
+  return j;
+}
+
+}  // namespace vs

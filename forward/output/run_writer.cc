@@ -1,0 +1,95 @@
+#include "output/run_writer.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "output/fld.h"
+#include "output/profile_csv.h"
+#include "output/run_manifest.h"
+#include "output/run_plots.h"
+#include "output/step_csv.h"
+#include "output/svg_plot.h"
+#include "output/text_file.h"
+
+namespace vs {
+namespace {
+
+class FolderWriter {
+ public:
+  explicit FolderWriter(const std::string& directory) : directory_(directory) {}
+
+  void text(const std::string& name, const std::string& content) {
+    write_text_file(path(name), content);
+    written_.push_back(name);
+  }
+
+  void svg(const std::string& name, const SvgFigure& figure) {
+    write_svg(figure, path(name));
+    written_.push_back(name);
+  }
+
+  bool has(const std::string& name) const {
+    return std::find(written_.begin(), written_.end(), name) != written_.end();
+  }
+
+  const std::vector<std::string>& written() const { return written_; }
+
+ private:
+  std::string path(const std::string& name) const {
+    return (std::filesystem::path(directory_) / name).string();
+  }
+
+  std::string directory_;
+  std::vector<std::string> written_;
+};
+
+// Two travels that round to the same two decimals get "_2", "_3"... rather than overwrite.
+std::string unique_strains_name(const FolderWriter& out, double punch_travel_mm) {
+  const std::string base = strains_file_name(punch_travel_mm);
+  std::string name = base;
+  for (int k = 2; out.has(name); ++k) {
+    name = base.substr(0, base.size() - 4) + fmt::format("_{}.csv", k);
+  }
+  return name;
+}
+
+}  // namespace
+
+std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& result,
+                                          const std::string& directory,
+                                          const RunWriterOptions& options) {
+  FolderWriter out(directory);
+  out.text("load_travel.csv", load_travel_csv(result.steps));
+  out.text("thinnest_point.csv", thinnest_point_csv(result.steps));
+  for (const Profile* p : profile_stages(result)) {
+    out.text(unique_strains_name(out, p->punch_travel_mm), profile_csv(*p));
+  }
+
+  const Profile* state = final_state(result);
+  out.text("fld_points.csv", fld_points_csv(state));
+  std::vector<StrainPath> paths;
+  if (state != nullptr && !result.history.empty()) {
+    paths = strain_paths(result, strain_path_elements(*state, options.strain_path_elements));
+  }
+  out.text("strain_paths.csv", strain_paths_csv(paths));
+
+  if (scene.output.plots) {
+    out.svg("load_travel.svg", load_travel_figure(scene, result));
+    out.svg("thickness_strain.svg", thickness_strain_figure(scene, result));
+    out.svg("strains.svg", strains_figure(scene, result));
+    out.svg("deformed_stages.svg", deformed_stages_figure(scene, result));
+    out.svg("fld.svg", fld_figure(scene, result, paths));
+  }
+
+  std::vector<std::string> files = out.written();
+  files.push_back("run.json");
+  // Invalid UTF-8 in a title must not cost the manifest: replace it instead of throwing.
+  const std::string manifest = run_manifest(scene, result, files)
+                                   .dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+  out.text("run.json", manifest + '\n');
+  return out.written();
+}
+
+}  // namespace vs

@@ -1,0 +1,15 @@
+// Snapshots of the model state for outputs: element-midpoint strain profiles and step scalars.
+#pragma once
+
+#include "model/axisym_model.h"
+#include "run/run_result.h"
+
+namespace vs {
+
+Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm);
+
+// Geometric scalars of a step record (thinnest point, volume, draw-in); the caller fills the
+// solver statistics and the force.
+void fill_geometry(const AxisymModel& model, const AxisymState& s, StepRecord* rec);
+
+}  // namespace vs

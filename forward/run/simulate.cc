@@ -1,0 +1,321 @@
+// Step driver (paper section 3 steps 1-7 and section 4.6): solve the velocity field in the current
+// configuration, choose the time step from the next contact event and the increment caps, update
+// geometry, thickness and hardening, and repeat to the total punch travel. A failed solve is cut
+// back (the previous update is redone with half the step); a run that cannot go on returns what
+// it has with Termination::kFailed.
+#include "run/simulate.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "core/error.h"
+#include "model/axisym_model.h"
+#include "run/axisym_problem.h"
+#include "run/observe.h"
+
+namespace vs {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A converged configuration: state plus what the step control needs.
+struct Solved {
+  AxisymState state;
+  double punch_force = 0.0;
+  double max_rate = 0.0;
+  std::vector<std::vector<double>> point_rates;
+  NonlinearSummary summary;
+  int active_set_rounds = 0;
+};
+
+class Driver {
+ public:
+  Driver(const Scene& scene, const RunOptions& options)
+      : scene_(scene), options_(options), model_(scene) {
+    contact_tol_ = 1e-8 * scene.blank.thickness_mm;
+    nl_.kind = scene.numerics.solver;
+    nl_.tolerance = scene.numerics.tolerance;
+    nl_.max_iterations = scene.numerics.max_iterations;
+    nl_.verbose = options.verbose;
+    targets_ = scene.process.output_travels_mm;
+    if (targets_.empty() || targets_.back() < scene.process.punch_travel_mm) {
+      targets_.push_back(scene.process.punch_travel_mm);
+    }
+  }
+
+  RunResult run();
+
+ private:
+  bool eligible(int node) const {
+    return !(node == model_.num_nodes() - 1 && scene_.blank.edge != EdgeCondition::kFree);
+  }
+  void attach(AxisymState& s, int node, int tool);
+  void maintain_contacts(AxisymState& s, const std::vector<char>& released);
+  // dt_predicted: step size expected after this solve (for the hardening seen by the solve).
+  bool solve(Solved* out, double dt_predicted, std::string* why);
+  bool advance(const Solved& from, double dt, AxisymState* to, std::string* why);
+  double choose_dt(const Solved& from, double cap_factor, std::vector<char>* released) const;
+  double travel(const AxisymState& s) const {
+    return s.time_s * scene_.process.punch_speed_mm_per_s;
+  }
+
+  const Scene& scene_;
+  RunOptions options_;
+  AxisymModel model_;
+  NonlinearOptions nl_;
+  std::vector<double> targets_;
+  double contact_tol_ = 0.0;
+  std::vector<char> released_;  // nodes released by the last solve (no immediate re-contact)
+  RunTimings timings_;
+};
+
+void Driver::attach(AxisymState& s, int node, int tool) {
+  const RigidTool& t = model_.tools()[tool];
+  const ClosestPoint c = t.closest(s.x[node]);
+  NodeContact& nc = s.contact[node];
+  const double keep_force = nc.tool == tool ? nc.normal_force_N : 0.0;
+  nc = NodeContact{};
+  nc.tool = tool;
+  nc.normal = c.normal;
+  nc.normal_force_N = keep_force;
+  nc.on_die_face = t.kind() == ToolKind::kDie && c.primitive == 0;
+  const double h = model_.node_thickness(s, node);
+  Eigen::Vector2d x = c.point + 0.5 * h * c.normal;
+  if (node == 0 && model_.initial_radius(0) == 0.0) {
+    // On the axis the contact normal is vertical by symmetry and the node stays on the axis.
+    nc.normal = Eigen::Vector2d(0.0, c.normal.y() >= 0.0 ? 1.0 : -1.0);
+    x = Eigen::Vector2d(0.0, c.point.y() + 0.5 * h * nc.normal.y());
+  }
+  s.x[node] = x;
+}
+
+void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released) {
+  model_.place_tools(s);
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    if (!eligible(i)) continue;
+    if (s.contact[i].tool >= 0) {
+      attach(s, i, s.contact[i].tool);  // back onto the surface, normal refreshed
+      continue;
+    }
+    if (!released.empty() && released[i]) continue;
+    int best = -1;
+    double best_gap = contact_tol_;
+    for (std::size_t t = 0; t < model_.tools().size(); ++t) {
+      const double g = model_.tools()[t].gap(s.x[i], model_.node_thickness(s, i));
+      if (g <= best_gap) {
+        best_gap = g;
+        best = static_cast<int>(t);
+      }
+    }
+    if (best >= 0) attach(s, i, best);
+  }
+}
+
+bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
+  AxisymState& s = out->state;
+  model_.place_tools(s);
+  model_.freeze_material(s, dt_predicted);
+  released_.assign(model_.num_nodes(), 0);
+  constexpr int kMaxRounds = 20;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    model_.update_holder(&s);
+    AxisymStepProblem problem(model_, &s);
+    Eigen::VectorXd x = problem.start(s.v);
+    const auto t0 = Clock::now();
+    out->summary = solve_nonlinear(problem, nl_, &x);
+    timings_.linear_solve_s += seconds_since(t0);
+    if (!out->summary.converged) {
+      *why = out->summary.message;
+      return false;
+    }
+    problem.finish(x);
+    s.v = model_.to_global(s, x);
+    // Contact release: a node whose reaction pulls on the tool leaves it (active-set check). The
+    // threshold ignores tensile reactions at round-off level of the largest contact force, which
+    // would otherwise make a node touching with zero force chatter in and out.
+    constexpr double kReleaseFraction = 1e-4;
+    const std::vector<double>& N = problem.normal_reactions();
+    double scale = 0.0;
+    for (int i = 0; i < model_.num_nodes(); ++i) scale = std::max(scale, std::abs(N[i]));
+    bool any = false;
+    for (int i = 0; i < model_.num_nodes(); ++i) {
+      if (s.contact[i].tool >= 0 && N[i] < -kReleaseFraction * scale) {
+        s.contact[i] = NodeContact{};
+        released_[i] = 1;
+        any = true;
+      }
+    }
+    out->active_set_rounds = round + 1;
+    if (!any) {
+      out->punch_force = problem.punch_force();
+      out->max_rate = problem.max_point_rate();
+      out->point_rates = problem.point_rates();
+      return true;
+    }
+  }
+  *why = "contact active set did not settle";
+  return false;
+}
+
+double Driver::choose_dt(const Solved& from, double cap_factor,
+                         std::vector<char>* /*released*/) const {
+  const double V = scene_.process.punch_speed_mm_per_s;
+  const double T = travel(from.state);
+  double cap = scene_.numerics.max_travel_increment_mm / V;
+  if (from.max_rate > 0.0) cap = std::min(cap, scene_.numerics.max_strain_increment / from.max_rate);
+  cap *= cap_factor;
+  double dt_target = std::numeric_limits<double>::infinity();
+  for (double tr : targets_) {
+    if (tr > T * (1.0 + 1e-12) + 1e-12) {
+      dt_target = (tr - T) / V;
+      break;
+    }
+  }
+  if (dt_target <= cap * (1.0 + 1e-9)) cap = dt_target;
+  // Next contact event (paper eq. 53, any tool, any free node), looked for a little beyond the
+  // cap so that the step fraction can approach it gradually.
+  const double frac = scene_.numerics.step_fraction;
+  const double horizon = cap / frac;
+  double dt_event = std::numeric_limits<double>::infinity();
+  const AxisymState& s = from.state;
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    if (!eligible(i) || s.contact[i].tool >= 0 || released_[i]) continue;
+    const Eigen::Vector2d v = s.v.segment<2>(3 * i);
+    const double h = model_.node_thickness(s, i);
+    for (const RigidTool& tool : model_.tools()) {
+      dt_event = std::min(dt_event, tool.contact_time(s.x[i], v, h, horizon));
+    }
+  }
+  if (dt_event <= cap) return std::max(dt_event, 1e-12 * cap);
+  if (std::isfinite(dt_event)) return std::min(cap, frac * dt_event);
+  return cap;
+}
+
+bool Driver::advance(const Solved& from, double dt, AxisymState* to, std::string* why) {
+  *to = from.state;
+  AxisymState& s = *to;
+  const int nn = model_.num_nodes();
+  for (int i = 0; i < nn; ++i) s.x[i] += dt * from.state.v.segment<2>(3 * i);
+  for (std::size_t t = 0; t < s.tool_offset.size(); ++t) {
+    s.tool_offset[t] += dt * model_.tools()[t].velocity();
+  }
+  const std::size_t np = model_.rule().zeta.size();
+  for (int e = 0; e < model_.num_elements(); ++e) {
+    for (std::size_t k = 0; k < np; ++k) s.eps_bar[e * np + k] += dt * from.point_rates[e][k];
+  }
+  s.time_s += dt;
+  maintain_contacts(s, released_);
+  // Thickness from the constant element volume (exact incompressibility; numerics.md 3.6).
+  for (int e = 0; e < model_.num_elements(); ++e) {
+    const Axisym2Geometry g = model_.geometry(s, e);
+    const double area = 2.0 * std::numbers::pi * g.mid_radius() * g.length();
+    const double h = model_.element_volume(e) / area;
+    if (!(h > 0.0) || !std::isfinite(h) || g.mid_radius() <= 0.0) {
+      *why = fmt::format("element {} degenerated (thickness {:.3g} mm)", e, h);
+      return false;
+    }
+    s.thickness[e] = h;
+  }
+  return true;
+}
+
+RunResult Driver::run() {
+  const auto t_start = Clock::now();
+  RunResult result;
+  Solved current;
+  current.state = model_.initial_state();
+  maintain_contacts(current.state, {});
+  std::string why;
+  const double V = scene_.process.punch_speed_mm_per_s;
+  if (!solve(&current, scene_.numerics.max_travel_increment_mm / V, &why)) {
+    result.termination = Termination::kFailed;
+    result.message = "the first step did not converge: " + why;
+    timings_.total_s = seconds_since(t_start);
+    result.timings = timings_;
+    return result;
+  }
+  const double total = scene_.process.punch_travel_mm;
+  std::size_t next_output = 0;
+  const auto& outputs = scene_.process.output_travels_mm;
+  double cap_factor = 1.0;
+  int cutbacks_since_success = 0;
+  for (int step = 0;; ++step) {
+    // Record the converged configuration.
+    const double T = travel(current.state);
+    StepRecord rec;
+    rec.step = step;
+    rec.punch_travel_mm = T;
+    rec.punch_force_N = current.punch_force;
+    rec.iterations = current.summary.iterations;
+    rec.residual_norm = current.summary.residual_norm;
+    rec.update_norm = current.summary.update_norm;
+    rec.cutbacks = cutbacks_since_success;
+    fill_geometry(model_, current.state, &rec);
+    result.steps.push_back(rec);
+    result.total_iterations += rec.iterations;
+    if (options_.on_step) options_.on_step(rec);
+    while (next_output < outputs.size() && std::abs(outputs[next_output] - T) <= 1e-9 * total) {
+      result.profiles.push_back(make_profile(model_, current.state, T));
+      ++next_output;
+    }
+    if (scene_.output.history) result.history.push_back(make_profile(model_, current.state, T));
+    if (T >= total * (1.0 - 1e-12)) break;
+
+    // Next configuration, with cut-back on failure.
+    Solved next;
+    bool ok = false;
+    cutbacks_since_success = 0;
+    while (!ok) {
+      const auto t0 = Clock::now();
+      const double dt = choose_dt(current, cap_factor, nullptr);
+      const bool advanced = advance(current, dt, &next.state, &why);
+      timings_.contact_s += seconds_since(t0);
+      ok = advanced && solve(&next, dt, &why);
+      if (ok) break;
+      if (cutbacks_since_success >= scene_.numerics.max_cutbacks) {
+        result.termination = Termination::kFailed;
+        result.message = fmt::format(
+            "stopped at punch travel {:.4f} mm after {} cut-backs: {}", T, cutbacks_since_success,
+            why);
+        result.profiles.push_back(make_profile(model_, current.state, T));
+        timings_.total_s = seconds_since(t_start);
+        result.timings = timings_;
+        return result;
+      }
+      if (options_.verbose) {
+        std::fprintf(stderr, "  cut-back at travel %.5f mm: %s\n", T, why.c_str());
+      }
+      ++cutbacks_since_success;
+      ++result.total_cutbacks;
+      cap_factor *= 0.5;
+      // The released set belongs to `current`; a retry must not inherit the failed attempt's.
+      released_.assign(model_.num_nodes(), 0);
+    }
+    cap_factor = std::min(1.0, 2.0 * cap_factor);
+    current = std::move(next);
+  }
+  result.profiles.push_back(make_profile(model_, current.state, travel(current.state)));
+  result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
+                               travel(current.state), result.steps.size());
+  timings_.total_s = seconds_since(t_start);
+  result.timings = timings_;
+  return result;
+}
+
+}  // namespace
+
+RunResult simulate(const Scene& scene, const RunOptions& options) {
+  Driver driver(scene, options);
+  return driver.run();
+}
+
+}  // namespace vs

@@ -1,0 +1,132 @@
+// Scene: plain data describing one simulation. Built only by load_scene() (scene/load_scene.h),
+// which applies the declared defaults, checks types and ranges and rejects unknown keys.
+// Every key is documented in docs/scene-reference.md. Units: mm, N, s, MPa.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace vs {
+
+enum class Geometry { kAxisymmetric };
+
+// Boundary condition at the outer rim of the blank.
+enum class EdgeCondition {
+  kPinned,   // radial and axial velocity zero, rotation free (paper example 1)
+  kClamped,  // radial, axial velocity and rotation zero
+  kFree,     // nothing prescribed: the rim may draw in over the die (paper examples 2, 3)
+};
+
+struct BlankSpec {
+  double radius_mm = 50.0;     // initial outer radius
+  double thickness_mm = 1.0;   // initial thickness
+  int elements = 50;           // number of 2-node elements along the meridian
+  double grading = 1.0;        // length ratio last/first element (geometric grading), > 0
+  EdgeCondition edge = EdgeCondition::kPinned;
+};
+
+enum class HardeningLaw {
+  kSwift,     // sigma = K (eps0 + eps)^n
+  kHollomon,  // sigma = max(sigma0, K eps^n): Hollomon with an initial yield plateau
+  kVoce,      // sigma = sigma0 + Q (1 - exp(-b eps))
+  kTable,     // piecewise linear (eps, sigma) times scale; last slope extrapolated
+};
+
+struct HardeningSpec {
+  HardeningLaw law = HardeningLaw::kSwift;
+  double K_MPa = 500.0;      // Swift, Hollomon strength coefficient
+  double eps0 = 0.01;        // Swift pre-strain
+  double n = 0.2;            // Swift, Hollomon hardening exponent
+  double sigma0_MPa = 200.0; // Hollomon initial yield, Voce initial yield
+  double Q_MPa = 100.0;      // Voce saturation increment
+  double b = 10.0;           // Voce rate
+  std::vector<double> table_strain;      // kTable: effective plastic strain, strictly increasing
+  std::vector<double> table_stress_MPa;  // kTable: flow stress, > 0
+  double table_scale = 1.0;              // kTable: multiplies every stress (calibration handle)
+};
+
+enum class RateLaw {
+  kNone,     // rate independent: sigma_bar = sigma_y(eps_bar)
+  kPerzyna,  // paper eq. (7): sigma_bar = sigma_y + (eps_dot / gamma)^(1/exponent)
+  kPower,    // sigma_bar = sigma_y (eps_dot / reference_rate)^m
+};
+
+struct RateSpec {
+  RateLaw law = RateLaw::kNone;
+  double gamma_per_s = 1.0;          // Perzyna fluidity
+  double exponent = 1.0;             // Perzyna exponent (not the hardening n)
+  double m = 0.01;                   // power-law rate sensitivity
+  double reference_rate_per_s = 1.0; // power-law reference strain rate
+};
+
+struct MaterialSpec {
+  HardeningSpec hardening;
+  RateSpec rate;
+  // Normal anisotropy (Lankford) R = width / thickness strain rate in uniaxial tension.
+  // Hill 1948 with planar isotropy, normalised so that sigma_bar equals the in-plane uniaxial
+  // flow stress: the hardening curve is the in-plane tensile curve for every R.
+  double r_value = 1.0;
+};
+
+enum class ToolKind {
+  kHemisphericalPunch,  // sphere of radius radius_mm, moves +z (into the sheet from below)
+  kFlatPunch,           // flat face, nose radius profile_radius_mm, outer radius radius_mm
+  kDie,                 // fixed, above the sheet: opening radius_mm, shoulder profile_radius_mm
+  kBlankHolder,         // presses the flange against the die face with force_N
+};
+
+struct ToolSpec {
+  std::string name;  // unique label used in outputs and calibration addresses
+  ToolKind kind = ToolKind::kHemisphericalPunch;
+  double radius_mm = 50.0;          // punch radius / die opening radius
+  double profile_radius_mm = 5.0;   // flat-punch nose radius / die shoulder radius
+  // Coulomb coefficient between this tool and the sheet; +infinity means sticking.
+  double friction = 0.0;
+  double force_N = 0.0;             // blank holder: total (360 degree) holding force
+  bool sticking() const { return friction == std::numeric_limits<double>::infinity(); }
+};
+
+struct ProcessSpec {
+  double punch_travel_mm = 10.0;           // total punch travel
+  double punch_speed_mm_per_s = 1.0;       // matters only for rate-sensitive materials
+  std::vector<double> output_travels_mm;   // travels at which strain distributions are written
+};
+
+enum class SolverKind {
+  kNewton,  // a few direct iterations, then Newton with a line search on the flow potential
+  kPicard,  // the paper's direct (secant) iteration only
+};
+
+struct NumericsSpec {
+  int thickness_points = 5;              // Simpson points through the thickness: 3, 5, 7 or 9
+  SolverKind solver = SolverKind::kNewton;
+  double tolerance = 1e-6;               // relative velocity change and relative residual
+  int max_iterations = 100;              // per step, before the step is cut back
+  double step_fraction = 0.5;            // fraction of the contact-event step taken when far
+  double max_travel_increment_mm = 0.5;  // cap on punch travel per step
+  double max_strain_increment = 0.02;    // cap on effective strain increment per step
+  double strain_rate_cutoff = 1e-4;      // cut-off rate, relative to punch_speed / blank radius
+  double friction_regularisation = 1e-4; // Coulomb arctan velocity, relative to punch speed
+  int max_cutbacks = 8;                  // step halvings before the run stops
+};
+
+struct OutputSpec {
+  std::string directory = "out";  // relative to the current working directory
+  bool plots = true;              // write SVG plots
+  bool history = true;            // keep per-step element strains (FLD paths, deformed stages)
+};
+
+struct Scene {
+  std::string source;  // file the scene came from (for messages)
+  std::string title;
+  Geometry geometry = Geometry::kAxisymmetric;
+  BlankSpec blank;
+  MaterialSpec material;
+  std::vector<ToolSpec> tools;
+  ProcessSpec process;
+  NumericsSpec numerics;
+  OutputSpec output;
+};
+
+}  // namespace vs

@@ -1,0 +1,201 @@
+// The two human-readable views of the key registry: the annotated defaults file
+// (vshell print-defaults) and the markdown reference (docs/scene-reference.md).
+#include <fmt/format.h>
+
+#include <string>
+
+#include "scene/load_scene.h"
+#include "scene/scene_checks.h"
+#include "scene/scene_keys.h"
+
+namespace vs {
+
+namespace {
+
+std::string type_text(const KeySpec& key) {
+  switch (key.type) {
+    case KeyType::kFloat:
+      return "float";
+    case KeyType::kInt:
+      return "integer";
+    case KeyType::kBool:
+      return "boolean";
+    case KeyType::kString:
+      return "string";
+    case KeyType::kEnum:
+      return "string (choice)";
+    case KeyType::kFloatArray:
+      return "array of float";
+    case KeyType::kPairArray:
+      return "array of [float, float]";
+  }
+  return "";
+}
+
+// Allowed values: the range for numbers, the choices for enums.
+std::string allowed_text(const KeySpec& key, bool markdown) {
+  const std::string quote = markdown ? "`" : "";
+  if (key.type == KeyType::kEnum || !key.choices.empty()) {
+    std::string out;
+    for (std::string_view c : key.choices) {
+      if (!out.empty()) out += markdown ? ", " : " | ";
+      out += key.type == KeyType::kEnum ? fmt::format("{}\"{}\"{}", quote, c, quote)
+                                        : fmt::format("{}{}{}", quote, c, quote);
+    }
+    return out;
+  }
+  if (key.type == KeyType::kFloat || key.type == KeyType::kInt ||
+      key.type == KeyType::kFloatArray) {
+    std::string out = key.range.text();
+    if (key.sticking_alias) out += markdown ? " or `\"sticking\"`" : " or \"sticking\"";
+    return out;
+  }
+  if (key.identifier) return "[A-Za-z0-9_]+";
+  return "";
+}
+
+std::string applies_text(const KeySpec& key) {
+  if (key.applies_to.empty()) return "";
+  std::string out;
+  for (std::string_view v : key.applies_to) out += (out.empty() ? "" : ", ") + std::string(v);
+  return fmt::format("{} {}", find_selector(key.section)->label, out);
+}
+
+// Whether the key is used by the section's default variant (so its default line is active).
+bool used_by_default_variant(const KeySpec& key) {
+  const VariantSelector* selector = find_selector(key.section);
+  if (selector == nullptr || key.applies_to.empty()) return true;
+  const std::string text = default_toml_text(*find_key(key.section, selector->key));
+  if (text.size() < 2) return false;
+  return key_applies(key, std::string_view(text).substr(1, text.size() - 2));
+}
+
+std::string escape_cell(std::string_view text) {
+  std::string out;
+  for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+void append_defaults_key(std::string& out, const KeySpec& key, bool whole_section_commented) {
+  std::string notes;
+  auto note = [&notes](const std::string& s) {
+    if (!s.empty()) notes += (notes.empty() ? "" : "; ") + s;
+  };
+  note(key.unit.empty() ? "" : fmt::format("unit {}", key.unit));
+  const std::string allowed = allowed_text(key, false);
+  note(allowed.empty() ? "" : fmt::format("allowed {}", allowed));
+  const std::string applies = applies_text(key);
+  note(applies.empty() ? "" : "only for " + applies);
+  note(key.required ? "required" : "");
+  out += fmt::format("# {}\n", key.doc);
+  if (!notes.empty()) out += fmt::format("# ({})\n", notes);
+  const std::string value = default_toml_text(key);
+  const bool active = !whole_section_commented && !value.empty() && used_by_default_variant(key);
+  const std::string shown = !value.empty() ? value : key.required ? "<required>" : "<none>";
+  out += fmt::format("{}{} = {}\n\n", active ? "" : "# ", key.name, shown);
+}
+
+void append_markdown_row(std::string& out, const KeySpec& key) {
+  std::string default_text = default_toml_text(key);
+  if (key.required) {
+    default_text = "required";
+  } else if (default_text.empty()) {
+    default_text = "none";
+  } else {
+    default_text = fmt::format("`{}`", default_text);
+  }
+  out += fmt::format(
+      "| `{}` | {} | {} | {} | {} | {} | {} |\n", key.name, type_text(key), default_text,
+      key.unit.empty() ? "-" : std::string(key.unit), escape_cell(allowed_text(key, true)),
+      key.applies_to.empty() ? "all" : escape_cell(applies_text(key)), escape_cell(key.doc));
+}
+
+}  // namespace
+
+std::string scene_defaults_toml() {
+  std::string out =
+      "# Viscous shell scene file: every key with its default, unit, allowed values and\n"
+      "# documentation (generated from the key registry, forward/scene/scene_keys.cc).\n"
+      "# Units: mm, N, s, MPa. Keys used only by another variant (hardening law, rate law,\n"
+      "# tool kind) are commented out; setting a key the chosen variant does not use is an "
+      "error.\n"
+      "# There are no tools by default: add one [[tool]] table per tool (exactly one punch).\n\n";
+  for (const SectionSpec& section : scene_sections()) {
+    const bool is_tool = section.name == "tool";
+    if (!section.name.empty()) {
+      out += fmt::format("# {}\n{}{}\n\n", section.doc, is_tool ? "# " : "", section.header);
+    }
+    for (const KeySpec& key : scene_keys()) {
+      if (key.section == section.name) append_defaults_key(out, key, is_tool);
+    }
+  }
+  return out;
+}
+
+std::string scene_reference_markdown() {
+  std::string out =
+      "<!-- Generated by scene_reference_markdown() (forward/scene/scene_docs.cc) from the key\n"
+      "     registry forward/scene/scene_keys.cc. Do not edit by hand; regenerate with\n"
+      "     build-scene/tests/vs_scene_tests --gtest_also_run_disabled_tests "
+      "--gtest_filter='*RegenerateReference*' -->\n\n"
+      "# Scene file reference\n\n"
+      "A scene is a TOML file describing one axisymmetric forming simulation. Every key below "
+      "has a type, a default (or is required), a unit and an allowed range. Unknown keys, wrong "
+      "types, out-of-range values and keys that the chosen variant does not use (for example "
+      "`K_MPa` with hardening law `voce`) are errors reported as one line "
+      "`FILE:LINE:COL: message`. Integers are accepted where floats are expected; floats are "
+      "not accepted for integers. `vshell print-defaults` prints an annotated file with every "
+      "default.\n\n"
+      "## Units\n\n"
+      "One consistent system everywhere: length in mm, force in N, time in s, stress in MPa "
+      "(= N/mm^2). Strains are true (logarithmic) strains, dimensionless. Key names carry their "
+      "unit (`radius_mm`, `force_N`, `gamma_per_s`); keys without a suffix are dimensionless.\n\n"
+      "## Coordinates and tools\n\n"
+      "- The model is axisymmetric about the z axis; r is the radius.\n"
+      "- The sheet mid-surface starts flat at z = 0 and spans 0 <= r <= blank `radius_mm`.\n"
+      "- The punch is below the sheet and moves in +z by `process.punch_travel_mm`. A "
+      "`hemispherical_punch` is a sphere of radius `radius_mm` on the axis; a `flat_punch` has "
+      "outer radius `radius_mm`, its flat face ending where the nose arc of radius "
+      "`profile_radius_mm` (centred at r = radius_mm - profile_radius_mm) begins.\n"
+      "- The `die` is fixed above the sheet. `radius_mm` is the opening radius (innermost "
+      "radius of the die); the shoulder arc of radius `profile_radius_mm` is centred at "
+      "r = radius_mm + profile_radius_mm, where the flat die face begins.\n"
+      "- The `blank_holder` sits below the flange and presses it up against the die face with "
+      "the total (360 degree) force `force_N`.\n"
+      "- `friction` is a Coulomb coefficient between that tool and the sheet; `inf` or "
+      "`\"sticking\"` means no slip.\n\n"
+      "## Keys\n\n";
+  for (const SectionSpec& section : scene_sections()) {
+    out += fmt::format("### {}\n\n{}\n\n", section.header, section.doc);
+    if (const VariantSelector* selector = find_selector(section.name)) {
+      out += fmt::format(
+          "The `{}` key selects the {}; a key whose `applies to` column does not list it is an "
+          "error.\n\n",
+          selector->key, selector->label);
+    }
+    out += "| key | type | default | unit | allowed | applies to | description |\n";
+    out += "|---|---|---|---|---|---|---|\n";
+    for (const KeySpec& key : scene_keys()) {
+      if (key.section == section.name) append_markdown_row(out, key);
+    }
+    out += "\n";
+  }
+  out +=
+      "## Hardening table files\n\n"
+      "`material.hardening.table_file` names a CSV file, relative to the scene file. Lines "
+      "starting with `#` and blank lines are ignored; the first other line is the header "
+      "`plastic_strain,stress_MPa`; each further line is one `strain,stress` point. Strains "
+      "start at 0 and increase strictly, stresses are > 0, at least 2 points. A malformed line "
+      "is reported as `FILE:LINE: message`.\n\n"
+      "## Consistency rules\n\n";
+  for (std::string_view rule : scene_consistency_rules()) out += fmt::format("- {}\n", rule);
+  out +=
+      "\n## Addresses\n\n"
+      "Command-line overrides (`vshell run --set ADDRESS=VALUE`) and calibration parameters "
+      "name a key by its dotted address: `section.key` (`blank.thickness_mm`, "
+      "`material.hardening.K_MPa`, `numerics.tolerance`) or `tool.NAME.key` for tools "
+      "(`tool.punch.friction`).\n";
+  return out;
+}
+
+}  // namespace vs

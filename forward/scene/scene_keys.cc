@@ -1,0 +1,394 @@
+#include "scene/scene_keys.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <type_traits>
+#include <utility>
+
+namespace vs {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Where each section lives in a Scene. [[tool]] keys live in the ToolSpec being read.
+Scene& top(Scene& s, ToolSpec&) { return s; }
+BlankSpec& blank(Scene& s, ToolSpec&) { return s.blank; }
+MaterialSpec& material(Scene& s, ToolSpec&) { return s.material; }
+HardeningSpec& hardening(Scene& s, ToolSpec&) { return s.material.hardening; }
+RateSpec& rate(Scene& s, ToolSpec&) { return s.material.rate; }
+ToolSpec& tool(Scene&, ToolSpec& t) { return t; }
+ProcessSpec& process(Scene& s, ToolSpec&) { return s.process; }
+NumericsSpec& numerics(Scene& s, ToolSpec&) { return s.numerics; }
+OutputSpec& output(Scene& s, ToolSpec&) { return s.output; }
+
+template <auto kSection, auto kMember>
+auto& member(Scene& s, ToolSpec& t) {
+  return kSection(s, t).*kMember;
+}
+
+// Enum keys: the enumerators are declared in the same order as KeySpec::choices.
+template <auto kSection, auto kMember>
+int get_enum(Scene& s, ToolSpec& t) {
+  return static_cast<int>(kSection(s, t).*kMember);
+}
+
+template <auto kSection, auto kMember>
+void set_enum(Scene& s, ToolSpec& t, int index) {
+  auto& value = kSection(s, t).*kMember;
+  value = static_cast<std::remove_reference_t<decltype(value)>>(index);
+}
+
+template <auto kSection, auto kMember>
+KeyField float_field() {
+  KeyField f;
+  f.number = &member<kSection, kMember>;
+  return f;
+}
+template <auto kSection, auto kMember>
+KeyField int_field() {
+  KeyField f;
+  f.integer = &member<kSection, kMember>;
+  return f;
+}
+template <auto kSection, auto kMember>
+KeyField bool_field() {
+  KeyField f;
+  f.flag = &member<kSection, kMember>;
+  return f;
+}
+template <auto kSection, auto kMember>
+KeyField string_field() {
+  KeyField f;
+  f.text = &member<kSection, kMember>;
+  return f;
+}
+template <auto kSection, auto kMember>
+KeyField array_field() {
+  KeyField f;
+  f.numbers = &member<kSection, kMember>;
+  return f;
+}
+template <auto kSection, auto kMember>
+KeyField enum_field() {
+  KeyField f;
+  f.get_choice = &get_enum<kSection, kMember>;
+  f.set_choice = &set_enum<kSection, kMember>;
+  return f;
+}
+
+KeySpec make(std::string_view section, std::string_view name, KeyType type, KeyField field,
+             std::string_view unit, Range range, std::string_view doc) {
+  KeySpec k;
+  k.section = section;
+  k.name = name;
+  k.type = type;
+  k.field = field;
+  k.unit = unit;
+  k.range = range;
+  k.doc = doc;
+  return k;
+}
+
+KeySpec choice(std::string_view section, std::string_view name, KeyField field,
+               std::vector<std::string_view> choices, std::string_view doc) {
+  KeySpec k = make(section, name, KeyType::kEnum, field, "", Range{}, doc);
+  k.choices = std::move(choices);
+  return k;
+}
+
+std::vector<KeySpec> build_keys() {
+  std::vector<KeySpec> keys;
+  auto add = [&keys](KeySpec k) -> KeySpec& {
+    keys.push_back(std::move(k));
+    return keys.back();
+  };
+  const auto kFloat = KeyType::kFloat;
+  const auto kInt = KeyType::kInt;
+
+  // Top level.
+  add(make("", "title", KeyType::kString, string_field<&top, &Scene::title>(), "", Range{},
+           "Free text shown in outputs and plots."));
+  add(choice("", "geometry", enum_field<&top, &Scene::geometry>(), {"axisymmetric"},
+             "Model geometry; only the axisymmetric shell is implemented."));
+
+  // [blank]
+  add(make("blank", "radius_mm", kFloat, float_field<&blank, &BlankSpec::radius_mm>(), "mm",
+           open_above(0), "Initial outer radius of the circular blank."));
+  add(make("blank", "thickness_mm", kFloat, float_field<&blank, &BlankSpec::thickness_mm>(), "mm",
+           open_above(0), "Initial sheet thickness (must be < radius_mm / 5: thin shell)."));
+  add(make("blank", "elements", kInt, int_field<&blank, &BlankSpec::elements>(), "", at_least(4),
+           "Number of 2-node elements along the meridian."));
+  add(make("blank", "grading", kFloat, float_field<&blank, &BlankSpec::grading>(), "",
+           open_above(0),
+           "Length ratio last/first element (geometric); < 1 refines the rim, > 1 the pole."));
+  add(choice("blank", "edge", enum_field<&blank, &BlankSpec::edge>(), {"pinned", "clamped", "free"},
+             "Rim condition: pinned (no radial/axial motion, rotation free), clamped (also no "
+             "rotation), free (draws in; needs a die)."));
+
+  // [material]
+  add(make("material", "r_value", kFloat, float_field<&material, &MaterialSpec::r_value>(), "",
+           closed(0.05, 20),
+           "Normal anisotropy (Lankford) R; Hill 1948, planar isotropy, normalised to the "
+           "in-plane uniaxial curve."));
+
+  // [material.hardening]
+  const std::string_view h = "material.hardening";
+  add(choice(h, "law", enum_field<&hardening, &HardeningSpec::law>(),
+             {"swift", "hollomon", "voce", "table"},
+             "Flow curve: swift K (eps0 + eps)^n; hollomon max(sigma0, K eps^n); voce sigma0 + "
+             "Q (1 - exp(-b eps)); table piecewise linear."));
+  add(make(h, "K_MPa", kFloat, float_field<&hardening, &HardeningSpec::K_MPa>(), "MPa",
+           open_above(0), "Strength coefficient K."))
+      .applies_to = {"swift", "hollomon"};
+  add(make(h, "eps0", kFloat, float_field<&hardening, &HardeningSpec::eps0>(), "",
+           open_closed(0, 1),
+           "Swift pre-strain; > 0 so the virgin material has a non-zero yield stress."))
+      .applies_to = {"swift"};
+  add(make(h, "n", kFloat, float_field<&hardening, &HardeningSpec::n>(), "", closed(0, 1),
+           "Strain-hardening exponent (not the Perzyna exponent)."))
+      .applies_to = {"swift", "hollomon"};
+  add(make(h, "sigma0_MPa", kFloat, float_field<&hardening, &HardeningSpec::sigma0_MPa>(), "MPa",
+           open_above(0), "Initial yield stress (Hollomon plateau, Voce start)."))
+      .applies_to = {"hollomon", "voce"};
+  add(make(h, "Q_MPa", kFloat, float_field<&hardening, &HardeningSpec::Q_MPa>(), "MPa", at_least(0),
+           "Voce saturation increment."))
+      .applies_to = {"voce"};
+  add(make(h, "b", kFloat, float_field<&hardening, &HardeningSpec::b>(), "", open_above(0),
+           "Voce saturation rate."))
+      .applies_to = {"voce"};
+  add(make(h, "table", KeyType::kPairArray, KeyField{}, "[-, MPa]", open_above(0),
+           "Inline curve [[plastic_strain, stress_MPa], ...]: strain strictly increasing from "
+           "0, stress > 0, at least 2 points. Give table or table_file."))
+      .applies_to = {"table"};
+  add(make(h, "table_file", KeyType::kString, KeyField{}, "", Range{},
+           "CSV curve, relative to the scene file: '#' comments, header "
+           "plastic_strain,stress_MPa, same rules as table."))
+      .applies_to = {"table"};
+  add(make(h, "table_scale", kFloat, float_field<&hardening, &HardeningSpec::table_scale>(), "",
+           open_above(0), "Multiplies every table stress (calibration handle)."))
+      .applies_to = {"table"};
+
+  // [material.rate]
+  const std::string_view r = "material.rate";
+  add(choice(r, "law", enum_field<&rate, &RateSpec::law>(), {"none", "perzyna", "power"},
+             "Rate law: none; perzyna sigma_y + (rate / gamma)^(1/exponent) (paper eq. 7); "
+             "power sigma_y (rate / reference_rate)^m."));
+  add(make(r, "gamma_per_s", kFloat, float_field<&rate, &RateSpec::gamma_per_s>(), "1/s",
+           open_above(0), "Perzyna fluidity gamma."))
+      .applies_to = {"perzyna"};
+  add(make(r, "exponent", kFloat, float_field<&rate, &RateSpec::exponent>(), "", open_above(0),
+           "Perzyna exponent (paper eq. 7 n; not the hardening n)."))
+      .applies_to = {"perzyna"};
+  add(make(r, "m", kFloat, float_field<&rate, &RateSpec::m>(), "", closed(0, 1),
+           "Power-law strain-rate sensitivity."))
+      .applies_to = {"power"};
+  add(make(r, "reference_rate_per_s", kFloat, float_field<&rate, &RateSpec::reference_rate_per_s>(),
+           "1/s", open_above(0), "Power-law reference strain rate."))
+      .applies_to = {"power"};
+
+  // [[tool]]
+  auto& name =
+      add(make("tool", "name", KeyType::kString, string_field<&tool, &ToolSpec::name>(), "",
+               Range{}, "Unique label used in outputs and addresses (tool.NAME.key)."));
+  name.required = true;
+  name.identifier = true;
+  add(choice("tool", "kind", enum_field<&tool, &ToolSpec::kind>(),
+             {"hemispherical_punch", "flat_punch", "die", "blank_holder"},
+             "Tool type; exactly one punch, at most one die and one blank holder."))
+      .required = true;
+  auto& radius = add(make("tool", "radius_mm", kFloat, float_field<&tool, &ToolSpec::radius_mm>(),
+                          "mm", open_above(0),
+                          "Punch radius (sphere radius / flat punch outer radius) or die "
+                          "opening radius."));
+  radius.required = true;
+  radius.applies_to = {"hemispherical_punch", "flat_punch", "die"};
+  add(make("tool", "profile_radius_mm", kFloat, float_field<&tool, &ToolSpec::profile_radius_mm>(),
+           "mm", open_above(0), "Flat-punch nose radius (< radius_mm) or die shoulder radius."))
+      .applies_to = {"flat_punch", "die"};
+  add(make("tool", "friction", kFloat, float_field<&tool, &ToolSpec::friction>(), "",
+           closed(0, kInf), "Coulomb coefficient with the sheet; inf or \"sticking\" = no slip."))
+      .sticking_alias = true;
+  auto& force = add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N",
+                         open_above(0), "Total (360 degree) blank-holder force."));
+  force.required = true;
+  force.applies_to = {"blank_holder"};
+
+  // [process]
+  add(make("process", "punch_travel_mm", kFloat,
+           float_field<&process, &ProcessSpec::punch_travel_mm>(), "mm", open_above(0),
+           "Total punch travel."));
+  add(make("process", "punch_speed_mm_per_s", kFloat,
+           float_field<&process, &ProcessSpec::punch_speed_mm_per_s>(), "mm/s", open_above(0),
+           "Punch speed; matters only for rate-sensitive materials."));
+  add(make("process", "output_travels_mm", KeyType::kFloatArray,
+           array_field<&process, &ProcessSpec::output_travels_mm>(), "mm", open_above(0),
+           "Travels at which strain distributions are written: strictly increasing, each "
+           "<= punch_travel_mm."));
+
+  // [numerics]
+  const std::string_view nu = "numerics";
+  add(make(nu, "thickness_points", kInt, int_field<&numerics, &NumericsSpec::thickness_points>(),
+           "", closed(3, 9), "Simpson integration points through the thickness."))
+      .choices = {"3", "5", "7", "9"};
+  add(choice(nu, "solver", enum_field<&numerics, &NumericsSpec::solver>(), {"newton", "picard"},
+             "newton: direct iterations then Newton with line search; picard: the paper's "
+             "direct iteration only."));
+  add(make(nu, "tolerance", kFloat, float_field<&numerics, &NumericsSpec::tolerance>(), "",
+           closed(1e-12, 0.1), "Relative velocity change and relative residual."));
+  add(make(nu, "max_iterations", kInt, int_field<&numerics, &NumericsSpec::max_iterations>(), "",
+           at_least(1), "Iterations per step before the step is cut back."));
+  add(make(nu, "step_fraction", kFloat, float_field<&numerics, &NumericsSpec::step_fraction>(), "",
+           open_closed(0, 1), "Fraction of the step to the next contact event taken."));
+  add(make(nu, "max_travel_increment_mm", kFloat,
+           float_field<&numerics, &NumericsSpec::max_travel_increment_mm>(), "mm", open_above(0),
+           "Cap on punch travel per step."));
+  add(make(nu, "max_strain_increment", kFloat,
+           float_field<&numerics, &NumericsSpec::max_strain_increment>(), "", open_closed(0, 0.5),
+           "Cap on the effective strain increment per step."));
+  add(make(nu, "strain_rate_cutoff", kFloat,
+           float_field<&numerics, &NumericsSpec::strain_rate_cutoff>(), "", closed(1e-12, 0.5),
+           "Cut-off strain rate relative to punch_speed / blank radius (rigid regions)."));
+  add(make(nu, "friction_regularisation", kFloat,
+           float_field<&numerics, &NumericsSpec::friction_regularisation>(), "", closed(1e-8, 0.1),
+           "Coulomb arctan slip velocity relative to the punch speed."));
+  add(make(nu, "max_cutbacks", kInt, int_field<&numerics, &NumericsSpec::max_cutbacks>(), "",
+           closed(0, 30), "Step halvings before the run stops."));
+
+  // [output]
+  add(make("output", "directory", KeyType::kString, string_field<&output, &OutputSpec::directory>(),
+           "", Range{}, "Run directory, relative to the current working directory."));
+  add(make("output", "plots", KeyType::kBool, bool_field<&output, &OutputSpec::plots>(), "",
+           Range{}, "Write SVG plots."));
+  add(make("output", "history", KeyType::kBool, bool_field<&output, &OutputSpec::history>(), "",
+           Range{}, "Keep per-step element strains (FLD paths, deformed stages)."));
+  return keys;
+}
+
+std::string number_text(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return fmt::format("{}", x);
+}
+
+}  // namespace
+
+bool Range::contains(double x) const {
+  if (std::isnan(x)) return false;
+  const bool above = lo_closed ? x >= lo : x > lo;
+  const bool below = hi_closed ? x <= hi : x < hi;
+  return above && below;
+}
+
+std::string Range::text() const {
+  return fmt::format("{}{}, {}{}", lo_closed ? '[' : '(', number_text(lo), number_text(hi),
+                     hi_closed ? ']' : ')');
+}
+
+Range open_above(double lo) { return Range{lo, kInf, false, false}; }
+Range at_least(double lo) { return Range{lo, kInf, true, false}; }
+Range closed(double lo, double hi) { return Range{lo, hi, true, true}; }
+Range open_closed(double lo, double hi) { return Range{lo, hi, false, true}; }
+
+std::string KeySpec::address_in_section() const {
+  if (section.empty()) return std::string(name);
+  return fmt::format("{}.{}", section, name);
+}
+
+const std::vector<KeySpec>& scene_keys() {
+  static const std::vector<KeySpec> keys = build_keys();
+  return keys;
+}
+
+const std::vector<SectionSpec>& scene_sections() {
+  static const std::vector<SectionSpec> sections = {
+      {"", "(top level)", "Title and model geometry."},
+      {"blank", "[blank]", "The circular blank and its mesh."},
+      {"material", "[material]", "Sheet material: anisotropy here, flow curve and rate law below."},
+      {"material.hardening", "[material.hardening]",
+       "Strain hardening; the keys allowed depend on `law`."},
+      {"material.rate", "[material.rate]", "Strain-rate sensitivity; the keys depend on `law`."},
+      {"tool", "[[tool]]", "Rigid tools, one table each; the keys allowed depend on `kind`."},
+      {"process", "[process]", "Punch motion and output stages."},
+      {"numerics", "[numerics]", "Integration, nonlinear solver and step control."},
+      {"output", "[output]", "What is written where."},
+  };
+  return sections;
+}
+
+const KeySpec* find_key(std::string_view section, std::string_view name) {
+  for (const KeySpec& k : scene_keys()) {
+    if (k.section == section && k.name == name) return &k;
+  }
+  return nullptr;
+}
+
+const VariantSelector* find_selector(std::string_view section) {
+  static const std::vector<VariantSelector> selectors = {
+      {"material.hardening", "law", "hardening law"},
+      {"material.rate", "law", "rate law"},
+      {"tool", "kind", "tool kind"},
+  };
+  for (const VariantSelector& s : selectors) {
+    if (s.section == section) return &s;
+  }
+  return nullptr;
+}
+
+bool key_applies(const KeySpec& key, std::string_view variant) {
+  if (key.applies_to.empty()) return true;
+  for (std::string_view v : key.applies_to) {
+    if (v == variant) return true;
+  }
+  return false;
+}
+
+std::string float_toml_text(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string default_toml_text(const KeySpec& key) {
+  if (key.required) return "";
+  Scene scene;
+  ToolSpec tool_spec;
+  const KeyField& f = key.field;
+  switch (key.type) {
+    case KeyType::kFloat:
+      return f.number ? float_toml_text(f.number(scene, tool_spec)) : "";
+    case KeyType::kInt:
+      return f.integer ? std::to_string(f.integer(scene, tool_spec)) : "";
+    case KeyType::kBool:
+      return f.flag ? (f.flag(scene, tool_spec) ? "true" : "false") : "";
+    case KeyType::kString:
+      return f.text ? fmt::format("\"{}\"", f.text(scene, tool_spec)) : "";
+    case KeyType::kEnum:
+      return f.get_choice ? fmt::format("\"{}\"", key.choices.at(static_cast<std::size_t>(
+                                                      f.get_choice(scene, tool_spec))))
+                          : "";
+    case KeyType::kFloatArray: {
+      if (!f.numbers) return "";
+      std::string s = "[";
+      for (double x : f.numbers(scene, tool_spec)) {
+        s += (s.size() > 1 ? ", " : "") + float_toml_text(x);
+      }
+      return s + "]";
+    }
+    case KeyType::kPairArray:
+      return "";
+  }
+  return "";
+}
+
+double default_number(const KeySpec& key) {
+  Scene scene;
+  ToolSpec tool_spec;
+  if (key.field.number) return key.field.number(scene, tool_spec);
+  if (key.field.integer) return key.field.integer(scene, tool_spec);
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace vs

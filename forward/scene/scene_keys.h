@@ -1,0 +1,112 @@
+// The registry of every scene key: section, name, type, unit, range, documentation, the variants
+// it applies to, and where its value lives in Scene. Validation (load_scene.cc), the annotated
+// defaults file and the markdown reference (scene_docs.cc) and dotted addresses (scene_table.cc)
+// all read this one list, so a key is declared exactly once. Defaults are not repeated here: they
+// are read from a default-constructed Scene / ToolSpec (the in-class defaults of scene.h).
+#pragma once
+
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace vs {
+
+enum class KeyType {
+  kFloat,  // TOML float or integer (converted)
+  kInt,    // TOML integer only
+  kBool,
+  kString,
+  kEnum,        // string from KeySpec::choices
+  kFloatArray,  // [x, ...]; KeySpec::range applies to each element
+  kPairArray,   // [[x, y], ...] (the inline hardening table)
+};
+
+// Interval of allowed values; an infinite bound is written inf and is only reachable if closed.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_closed = false;
+  bool hi_closed = false;
+
+  bool contains(double x) const;
+  std::string text() const;  // "(0, inf)", "[1e-12, 0.1]"
+};
+
+Range open_above(double lo);              // (lo, inf)
+Range at_least(double lo);                // [lo, inf)
+Range closed(double lo, double hi);       // [lo, hi]
+Range open_closed(double lo, double hi);  // (lo, hi]
+
+// Accessors into the Scene under construction. The ToolSpec argument is the tool being read for
+// [[tool]] keys and is ignored elsewhere. Exactly one accessor matching the key's type is set,
+// except for keys the loader handles itself (material.hardening.table / table_file).
+struct KeyField {
+  double& (*number)(Scene&, ToolSpec&) = nullptr;
+  int& (*integer)(Scene&, ToolSpec&) = nullptr;
+  bool& (*flag)(Scene&, ToolSpec&) = nullptr;
+  std::string& (*text)(Scene&, ToolSpec&) = nullptr;
+  std::vector<double>& (*numbers)(Scene&, ToolSpec&) = nullptr;
+  int (*get_choice)(Scene&, ToolSpec&) = nullptr;  // index into KeySpec::choices
+  void (*set_choice)(Scene&, ToolSpec&, int) = nullptr;
+};
+
+struct KeySpec {
+  std::string_view section;  // "" (top level), "blank", "material.hardening", "tool", ...
+  std::string_view name;
+  KeyType type = KeyType::kFloat;
+  std::string_view unit;                  // "" for dimensionless
+  Range range;                            // kFloat, kInt, kFloatArray
+  std::vector<std::string_view> choices;  // kEnum: allowed strings; kInt: allowed values if set
+  // Variants of the section's selector (hardening law, rate law, tool kind) this key is used by;
+  // empty = every variant.
+  std::vector<std::string_view> applies_to;
+  bool required = false;        // no default: must be given (where it applies)
+  bool sticking_alias = false;  // also accepts the string "sticking" (= +inf)
+  bool identifier = false;      // string restricted to [A-Za-z0-9_]+
+  std::string_view doc;
+  KeyField field;
+
+  std::string address_in_section() const;  // "blank.radius_mm", "tool.friction", "title"
+};
+
+// A section whose keys depend on one of its own enum keys (the selector).
+struct VariantSelector {
+  std::string_view section;  // "material.hardening"
+  std::string_view key;      // "law"
+  std::string_view label;    // "hardening law", used in "key 'K_MPa' is not used by ..."
+};
+
+// Every key, in documentation order (sections in file order, keys in section order).
+const std::vector<KeySpec>& scene_keys();
+
+// Sections in documentation order, with a one-line description each.
+struct SectionSpec {
+  std::string_view name;    // "" for the top level
+  std::string_view header;  // "[blank]", "[[tool]]", "(top level)"
+  std::string_view doc;
+};
+const std::vector<SectionSpec>& scene_sections();
+
+// The key `name` of `section`, or nullptr.
+const KeySpec* find_key(std::string_view section, std::string_view name);
+
+// Selector of `section`, or nullptr if the section has no variants.
+const VariantSelector* find_selector(std::string_view section);
+
+// Whether `key` is used when its section's selector has the value `variant`.
+bool key_applies(const KeySpec& key, std::string_view variant);
+
+// The default value as TOML text ("0.85", "\"pinned\"", "[]"), or "" if the key is required or
+// has no value by default (table, table_file).
+std::string default_toml_text(const KeySpec& key);
+
+// Numeric default of a kFloat / kInt key (from a default-constructed Scene / ToolSpec).
+double default_number(const KeySpec& key);
+
+// TOML text of a double: always shows it is a float ("500.0", "1e-06", "inf").
+std::string float_toml_text(double x);
+
+}  // namespace vs

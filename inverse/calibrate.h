@@ -1,0 +1,85 @@
+// The calibration toolkit's entry point: base scene(s) + parameters + measured curves ->
+// identified parameters with uncertainty, a log of every forward run, and a report folder.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "calibration_config.h"
+#include "forward_cache.h"
+#include "forward_model.h"
+#include "uncertainty.h"
+
+namespace vs {
+
+struct CalibrationOptions {
+  // Progress lines (one per optimiser iteration, plus a few stage lines). Empty = silent.
+  std::function<void(const std::string&)> progress;
+  bool write_report = true;
+  // Replaces config.output_directory when not empty (vshell calibrate -o DIR).
+  std::string output_directory;
+};
+
+enum class CalibrationTermination {
+  kConverged,      // Ceres met a convergence tolerance
+  kNotConverged,   // iteration limit: the last point is reported but is not an optimum
+  kFailed,         // no usable point (e.g. the forward model fails at the start)
+};
+
+std::string to_string(CalibrationTermination termination);
+
+// Measured against simulated at the optimum, for one data set (fit_<name>.csv and the plots).
+struct DataSetFit {
+  std::string name;
+  MeasurementKind kind = MeasurementKind::kLoadTravel;
+  double travel_mm = 0.0;
+  std::vector<double> x, measured, simulated, weight;
+  double cost = 0.0;           // 0.5 sum of weighted squared residuals
+  double rms_difference = 0.0; // sqrt(mean((simulated - measured)^2)), in N or strain
+  bool ok = false;
+};
+
+struct ParameterResult {
+  ParameterSpec spec;  // as used (initial and scale filled in from the scene when defaulted)
+  std::string unit;
+  double value = 0.0;  // identified (or the fixed value)
+};
+
+struct CalibrationResult {
+  std::vector<ParameterResult> parameters;  // all, in config order
+  std::vector<std::string> scene_sources;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  int iterations = 0;
+  int forward_runs = 0;            // scene runs started (points x scenes)
+  int failed_evaluations = 0;      // points whose residuals could not be formed
+  double wall_time_s = 0.0;
+  CalibrationTermination termination = CalibrationTermination::kFailed;
+  std::string ceres_termination;   // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
+  std::string message;             // why it stopped
+  bool global_search_used = false;
+  GlobalSearchSummary global;      // when used
+  std::vector<DataSetFit> fits;
+  bool uncertainty_available = false;
+  UncertaintySummary uncertainty;  // free parameters only, in free order
+  std::string uncertainty_message; // why not available
+  std::vector<std::shared_ptr<const Evaluation>> evaluations;  // every forward evaluation
+  std::string output_directory;    // where the report went ("" if not written)
+  std::vector<std::string> report_notes;  // e.g. plots skipped
+
+  // Free parameters' identified values, in free order.
+  Eigen::VectorXd free_values() const;
+  // One line per parameter with value, +- std error and the statements.
+  std::string brief_report() const;
+};
+
+// Validates everything (config, scenes, parameter addresses, bounds, data travels against the
+// scenes) before the first forward run; throws InputError. Forward failures during the fit are
+// counted, never thrown.
+CalibrationResult calibrate(const CalibrationConfig& config, const CalibrationOptions& options,
+                            ForwardModel model);
+
+}  // namespace vs

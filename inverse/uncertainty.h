@@ -1,0 +1,73 @@
+// Linearised uncertainty at the optimum, from the Jacobian J = d r / d x of the weighted
+// residuals:  Cov = s^2 (J^T J)^-1, with s^2 = 2 cost / (m - p) = |r|^2 / (m - p) (the residual
+// variance; for correctly stated sigmas it is ~1). Exact for a linear model; for a nonlinear
+// one it is a local approximation (see ecosystem.md B.2), which is why the summary also says
+// plainly when the numbers mean little: rank deficiency, |correlation| above a threshold, a
+// relative standard error above a threshold, or a parameter sitting on a bound.
+//
+// Intervals: value +- q * std_error with q the two-sided Student-t quantile with m - p degrees of
+// freedom when s^2 is estimated from the residuals (the textbook choice for linear least
+// squares with unknown variance), or the normal quantile when the stated sigmas are trusted
+// (scale_by_residual_variance = false) or m <= p.
+//
+// Computed with an SVD of J * diag(scale) (the same dense-SVD algorithm as
+// ceres::Covariance's DENSE_SVD), so that rank and condition number are judged in the units the
+// user declared typical for each parameter.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace vs {
+
+struct UncertaintyOptions {
+  double confidence = 0.95;
+  bool scale_by_residual_variance = true;
+  // Singular values below rank_tolerance * largest count as zero.
+  double rank_tolerance = 1e-8;
+  double correlation_threshold = 0.95;      // |corr| above this: "poorly determined"
+  double relative_error_threshold = 0.5;    // std_error / |value| above this: "poorly determined"
+
+  bool IsValid(std::string* why) const;
+};
+
+struct ParameterUncertainty {
+  std::string name;
+  double value = 0.0;
+  double std_error = 0.0;          // +inf when not determined (null-space direction)
+  double interval_lower = 0.0;     // value -+ quantile * std_error
+  double interval_upper = 0.0;
+  bool determined = true;          // false: in the null space, strongly correlated, or huge error
+  bool at_bound = false;
+};
+
+struct UncertaintySummary {
+  int num_residuals = 0;
+  int num_parameters = 0;
+  int degrees_of_freedom = 0;      // m - p
+  double residual_variance = 1.0;  // s^2 used to scale (1 when not scaled)
+  double quantile = 0.0;           // the q of the intervals
+  std::string quantile_kind;       // "student_t(dof)" or "normal"
+  std::vector<double> singular_values;  // of J * diag(scale), descending
+  int rank = 0;
+  double condition_number = 0.0;   // largest / smallest singular value (inf if rank deficient)
+  Eigen::MatrixXd covariance;      // own units; NaN rows/columns for undetermined parameters
+  Eigen::MatrixXd correlation;
+  std::vector<ParameterUncertainty> parameters;
+  std::vector<std::string> statements;  // plain-language warnings, empty if all is well
+  bool well_determined() const { return statements.empty(); }
+};
+
+// `jacobian` is m x p in the parameters' own units; `cost` = 0.5 |r|^2 at `values`.
+// `lower`/`upper` only serve the at-bound warning.
+UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double cost,
+                                        const Eigen::VectorXd& values,
+                                        const Eigen::VectorXd& scale,
+                                        const Eigen::VectorXd& lower,
+                                        const Eigen::VectorXd& upper,
+                                        const std::vector<std::string>& names,
+                                        const UncertaintyOptions& options);
+
+}  // namespace vs
