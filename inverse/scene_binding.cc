@@ -13,8 +13,11 @@ namespace vs {
 namespace {
 
 // Sorted union of the scene's own output travels and the data travels, without near-duplicates
-// (a data travel of 20 and a scene travel of 20.0 are one stop).
+// (a data travel of 20 and a scene travel of 20.0 are one stop). Travels beyond the total punch
+// travel are dropped: the scene's own ones may have been cut by an override (a shorter
+// calibration run), and data that need more travel are reported by calibrate() in plain words.
 std::vector<double> merged_travels(const toml::table& table, const std::vector<double>& extra) {
+  const double total = get_scene_number(table, "process.punch_travel_mm");
   std::vector<double> travels = extra;
   if (const auto* process = table["process"].as_table()) {
     if (const auto* existing = (*process)["output_travels_mm"].as_array()) {
@@ -26,6 +29,7 @@ std::vector<double> merged_travels(const toml::table& table, const std::vector<d
   std::sort(travels.begin(), travels.end());
   std::vector<double> unique;
   for (double t : travels) {
+    if (t > total) continue;
     if (unique.empty() || std::abs(t - unique.back()) > 1e-9 * std::max(1.0, std::abs(t))) {
       unique.push_back(t);
     }
