@@ -286,6 +286,22 @@ void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local,
   out->residual = std::move(r);
 }
 
+void AxisymModel::element_states(const AxisymState& s, const Eigen::VectorXd& v_local,
+                                 std::vector<std::vector<double>>* point_rates,
+                                 std::vector<Vec5>* resultants) const {
+  const Eigen::VectorXd v = to_global(s, v_local);
+  point_rates->resize(num_elements());
+  resultants->resize(num_elements());
+  Axisym2Output eo;
+  for (int e = 0; e < num_elements(); ++e) {
+    Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
+    axisym2_evaluate(geometry(s, e), sec, rule_, law_, v.segment<6>(3 * e), StiffnessKind::kNone,
+                     &eo);
+    (*point_rates)[e] = eo.point_rate;
+    (*resultants)[e] = eo.stress_resultant;
+  }
+}
+
 double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local) const {
   AxisymSystem sys;
   evaluate(s, v_local, StiffnessKind::kNone, &sys);

@@ -99,6 +99,11 @@ class AxisymModel {
   // Potential only (line search).
   double potential(const AxisymState& s, const Eigen::VectorXd& v_local) const;
 
+  // Effective strain rate at every thickness point and stress resultants of every element.
+  void element_states(const AxisymState& s, const Eigen::VectorXd& v_local,
+                      std::vector<std::vector<double>>* point_rates,
+                      std::vector<Vec5>* resultants) const;
+
   // Per-node contact force on the sheet (global frame): f_el - f_ext at the node.
   Eigen::Vector2d node_force(const AxisymSystem& sys, int node) const;
 

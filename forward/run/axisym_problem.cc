@@ -24,10 +24,28 @@ void AxisymStepProblem::reactions(const AxisymSystem& sys, std::vector<double>* 
 void AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
   // Reactions of the iterate just evaluated (one iteration behind x), as in the paper's nodal
   // stick/slip check at the end of each iteration.
+  // The lag is a fixed point N -> v -> N that can overshoot and oscillate with period two when
+  // the regularised friction is steep; each node's update is relaxed, halving the factor whenever
+  // its change reverses sign and growing it back while the change keeps its sign.
   (void)x;
   std::vector<double> n;
   reactions(sys_, &n);
-  for (int i = 0; i < model_.num_nodes(); ++i) state_->contact[i].normal_force_N = n[i];
+  const int nn = model_.num_nodes();
+  if (relax_.size() != static_cast<std::size_t>(nn)) {
+    relax_.assign(nn, 1.0);
+    last_change_.assign(nn, 0.0);
+  }
+  for (int i = 0; i < nn; ++i) {
+    NodeContact& c = state_->contact[i];
+    const double change = n[i] - c.normal_force_N;
+    if (change * last_change_[i] < 0.0) {
+      relax_[i] = std::max(0.125, 0.5 * relax_[i]);
+    } else {
+      relax_[i] = std::min(1.0, 1.5 * relax_[i]);
+    }
+    last_change_[i] = change;
+    c.normal_force_N += relax_[i] * change;
+  }
 }
 
 Eigen::VectorXd AxisymStepProblem::start(const Eigen::VectorXd& v_global) const {
@@ -51,22 +69,12 @@ void AxisymStepProblem::finish(const Eigen::VectorXd& x) {
       punch_force_ += model_.node_force(sys, i).y();
     }
   }
-  // Effective strain rates at every thickness point (for hardening and the step size).
-  const Eigen::VectorXd v = model_.to_global(*state_, x);
-  point_rates_.assign(model_.num_elements(), {});
+  // Effective strain rates at every thickness point (for hardening and the step size) and the
+  // stress resultants (for outputs and equilibrium checks).
+  model_.element_states(*state_, x, &point_rates_, &resultants_);
   max_rate_ = 0.0;
-  const ThicknessRule& rule = model_.rule();
-  const ViscousLaw& law = model_.law();
-  for (int e = 0; e < model_.num_elements(); ++e) {
-    const Vec5 g = axisym2_B(model_.geometry(*state_, e)) * v.segment<6>(3 * e);
-    const double h = state_->thickness[e];
-    auto& pr = point_rates_[e];
-    pr.resize(rule.zeta.size());
-    for (std::size_t k = 0; k < rule.zeta.size(); ++k) {
-      const double z = rule.zeta[k] * h;
-      pr[k] = law.effective_rate(Eigen::Vector2d(g(0) + z * g(2), g(1) + z * g(3)));
-      max_rate_ = std::max(max_rate_, pr[k]);
-    }
+  for (const auto& pr : point_rates_) {
+    for (double r : pr) max_rate_ = std::max(max_rate_, r);
   }
 }
 

@@ -30,6 +30,8 @@ class AxisymStepProblem : public NonlinearProblem {
   const std::vector<double>& normal_reactions() const { return normal_; }
   const std::vector<std::vector<double>>& point_rates() const { return point_rates_; }
   double max_point_rate() const { return max_rate_; }
+  // Stress resultants (N_s, N_t, M_s, M_t, Q) per element at the last finish().
+  const std::vector<Vec5>& resultants() const { return resultants_; }
 
  private:
   void reactions(const AxisymSystem& sys, std::vector<double>* normal) const;
@@ -41,6 +43,9 @@ class AxisymStepProblem : public NonlinearProblem {
   double max_rate_ = 0.0;
   std::vector<double> normal_;
   std::vector<std::vector<double>> point_rates_;
+  std::vector<Vec5> resultants_;
+  // Adaptive relaxation of the lagged normal forces, per node.
+  std::vector<double> relax_, last_change_;
 };
 
 }  // namespace vs

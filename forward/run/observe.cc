@@ -6,7 +6,8 @@
 
 namespace vs {
 
-Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm) {
+Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm,
+                     const std::vector<Vec5>& resultants) {
   Profile p;
   p.punch_travel_mm = punch_travel_mm;
   const std::size_t np = model.rule().zeta.size();
@@ -23,6 +24,14 @@ Profile make_profile(const AxisymModel& model, const AxisymState& s, double punc
     p.eps_thickness.push_back(std::log(s.thickness[e] / h0));
     p.eps_effective.push_back(s.eps_bar[e * np + np / 2]);
     p.contact.push_back((s.contact[e].tool >= 0 || s.contact[e + 1].tool >= 0) ? 1 : 0);
+    if (!resultants.empty()) {
+      const Vec5& S = resultants[e];
+      const double l = g.length();
+      const double c = (g.rb - g.ra) / l, sn = (g.zb - g.za) / l;
+      p.meridional_force_N_per_mm.push_back(S(0));
+      p.circumferential_force_N_per_mm.push_back(S(1));
+      p.vertical_force_N.push_back(-2.0 * std::numbers::pi * g.mid_radius() * (S(0) * sn + S(4) * c));
+    }
   }
   for (const auto& x : s.x) {
     p.node_r_mm.push_back(x.x());

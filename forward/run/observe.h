@@ -6,7 +6,9 @@
 
 namespace vs {
 
-Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm);
+// `resultants` (N_s, N_t, M_s, M_t, Q per element) may be empty (then the force columns are).
+Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm,
+                     const std::vector<Vec5>& resultants);
 
 // Geometric scalars of a step record (thinnest point, volume, draw-in); the caller fills the
 // solver statistics and the force.

@@ -37,6 +37,11 @@ struct Profile {
   std::vector<double> eps_thickness;     // ln(h / h0)
   std::vector<double> eps_effective;     // accumulated effective plastic strain (mid-surface)
   std::vector<int> contact;              // 0 free, 1 touching a tool at either node
+  std::vector<double> meridional_force_N_per_mm;       // N_s = integral of sigma_s over h
+  std::vector<double> circumferential_force_N_per_mm;  // N_t
+  // Axial force carried through the circle at the element midpoint, -2 pi r (N_s t_z + Q n_z):
+  // in the unsupported region it equals the punch force (exact equilibrium check).
+  std::vector<double> vertical_force_N;
   std::vector<double> node_r_mm;         // deformed shape: nodes of the meridian
   std::vector<double> node_z_mm;
 };

@@ -33,6 +33,7 @@ struct Solved {
   double punch_force = 0.0;
   double max_rate = 0.0;
   std::vector<std::vector<double>> point_rates;
+  std::vector<Vec5> resultants;
   NonlinearSummary summary;
   int active_set_rounds = 0;
 };
@@ -159,6 +160,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
       out->punch_force = problem.punch_force();
       out->max_rate = problem.max_point_rate();
       out->point_rates = problem.point_rates();
+      out->resultants = problem.resultants();
       return true;
     }
   }
@@ -264,10 +266,10 @@ RunResult Driver::run() {
     result.total_iterations += rec.iterations;
     if (options_.on_step) options_.on_step(rec);
     while (next_output < outputs.size() && std::abs(outputs[next_output] - T) <= 1e-9 * total) {
-      result.profiles.push_back(make_profile(model_, current.state, T));
+      result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
       ++next_output;
     }
-    if (scene_.output.history) result.history.push_back(make_profile(model_, current.state, T));
+    if (scene_.output.history) result.history.push_back(make_profile(model_, current.state, T, current.resultants));
     if (T >= total * (1.0 - 1e-12)) break;
 
     // Next configuration, with cut-back on failure.
@@ -286,7 +288,7 @@ RunResult Driver::run() {
         result.message = fmt::format(
             "stopped at punch travel {:.4f} mm after {} cut-backs: {}", T, cutbacks_since_success,
             why);
-        result.profiles.push_back(make_profile(model_, current.state, T));
+        result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
         timings_.total_s = seconds_since(t_start);
         result.timings = timings_;
         return result;
@@ -303,7 +305,7 @@ RunResult Driver::run() {
     cap_factor = std::min(1.0, 2.0 * cap_factor);
     current = std::move(next);
   }
-  result.profiles.push_back(make_profile(model_, current.state, travel(current.state)));
+  result.profiles.push_back(make_profile(model_, current.state, travel(current.state), current.resultants));
   result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
                                travel(current.state), result.steps.size());
   timings_.total_s = seconds_since(t_start);

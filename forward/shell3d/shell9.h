@@ -1,0 +1,82 @@
+// The 9-node degenerated shell element of paper section 6 in the viscous analogy (velocities for
+// displacements, strain rates for strains), with a choice of strain evaluation:
+//   kSelective (paper, section 6.3): in-plane components (eps11, eps22, gam12) at 3x3 points,
+//     transverse shear (gam13, gam23) at 2x2 points. Membrane-locks on thin curved shells and has
+//     one spurious transverse mode in flat free meshes (numerics.md sections 1.4, 2.1).
+//   kMitc9: all components at 3x3 points from the MITC9 assumed covariant strains (mitc9.h).
+//   kFull / kReduced: everything at 3x3 / 2x2 (for comparison and zero-mode tests only).
+// Through the thickness, any ThicknessRule (Gauss or Simpson; quadrature.h).
+//
+// Constitutive choices (Shell9Material):
+//   elastic:  D1 = E/(1-nu^2) [[1,nu,0],[nu,1,0],[0,0,(1-nu)/2]], D2 = k G I, G = E/(2(1+nu)),
+//             k = 5/6 (eq. 63 read as k G, READING-NOTES). nu = 1/2 gives G [[4,2,0],[2,4,0],
+//             [0,0,1]] = the viscous D1 with mu = G (numerics.md 1.1).
+//   viscous:  the Hill point law (hill_plane_stress.h) at every in-plane point and thickness
+//             point ("flow point"); ViscousLaw::Constant(mu) is the constant-viscosity mode.
+//             Transverse shear carries the penalty viscosity k * shear_viscosity, not the flow
+//             rule (numerics.md 3.4; same choice as the axisymmetric element).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "element/simpson.h"
+#include "shell3d/hill_plane_stress.h"
+#include "shell3d/shell9_kinematics.h"
+
+namespace vs::shell3d {
+
+enum class Shell9Rule { kSelective, kMitc9, kFull, kReduced };
+
+inline constexpr double kShellShearCorrection = 5.0 / 6.0;
+
+struct Shell9Material {
+  bool viscous = false;
+  double young = 0.0, poisson = 0.5;         // elastic
+  const HillPlaneStressLaw* law = nullptr;   // viscous (not owned)
+  double shear_viscosity = 0.0;              // viscous: transverse-shear penalty viscosity
+  double shear_correction = kShellShearCorrection;
+  // Artificial drilling stiffness at 6-dof nodes: drill_scale * G_ref * h_a * (element area) / 9
+  // for each such node (G_ref = G or shear_viscosity).
+  double drill_scale = 1e-3;
+
+  static Shell9Material Elastic(double young, double poisson);
+  static Shell9Material Viscous(const HillPlaneStressLaw& law, double shear_viscosity);
+  double shear_reference() const;
+};
+
+// Per flow point state (viscous only), index = in-plane point * n_thickness + thickness point.
+// Null pointers mean 0.
+struct Shell9State {
+  const double* sigma_y = nullptr;
+  const double* hardening_viscosity = nullptr;
+};
+
+enum class Shell9Stiffness { kSecant, kTangent, kNone };
+
+struct Shell9Resultant {
+  Vec3 N = Vec3::Zero();  // membrane forces (N11, N22, N12) [N/mm], local frame
+  Vec3 M = Vec3::Zero();  // moments int s z dz [N], z along e3
+};
+
+struct Shell9Output {
+  Eigen::VectorXd force;      // internal nodal forces, element dofs
+  Eigen::MatrixXd stiffness;  // secant or tangent
+  double potential = 0.0;     // integral of the power potential (elastic: strain energy)
+  std::vector<double> point_rate;             // effective rate at each flow point (viscous)
+  std::vector<Shell9Resultant> resultant;     // at each in-plane (flow) point
+  std::vector<Eigen::Vector2d> shear_force;   // (Q13, Q23) [N/mm] at each shear point
+};
+
+// Number of in-plane points of the flow (membrane/bending) rule: 9, or 4 for kReduced.
+int shell9_inplane_points(Shell9Rule rule);
+
+// Evaluates the element at element velocities q (size g.ndof()).
+void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                     const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
+                     Shell9Stiffness kind, Shell9Output* out, double tangent_weight = 1.0);
+
+// Mid-surface area of the element (3x3 Gauss).
+double shell9_area(const Shell9Geometry& g);
+
+}  // namespace vs::shell3d
