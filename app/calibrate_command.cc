@@ -1,11 +1,11 @@
 #include "calibrate_command.h"
 
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
 #include <string>
-
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
 
 #include "calibrate.h"
 #include "calibration_config.h"

@@ -114,6 +114,7 @@ int run_command(const RunArgs& args) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  for (const std::string& w : result.warnings) std::cerr << "warning: " << w << '\n';
   std::cout << vs::summary_report(vs::summarize_run(result)) << '\n'
             << fmt::format("wall time         {:.2f} s\n", wall_s)
             << fmt::format("output folder     {}\n", dir);

@@ -1,11 +1,11 @@
 #include "calibrate.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 #include "least_squares.h"
@@ -72,10 +72,10 @@ void check_against_scenes(const CalibrationConfig& config,
     const Measurement& m = d.measurement;
     const double needed = m.kind == MeasurementKind::kLoadTravel ? m.x.back() : m.travel_mm;
     if (needed > scene.process.punch_travel_mm * (1.0 + 1e-12)) {
-      throw InputError(fmt::format("{}: data set '{}' needs {} mm of punch travel but {} stops "
-                                   "at process.punch_travel_mm = {} mm",
-                                   d.where, m.name, needed, binding.source(),
-                                   scene.process.punch_travel_mm));
+      throw InputError(
+          fmt::format("{}: data set '{}' needs {} mm of punch travel but {} stops "
+                      "at process.punch_travel_mm = {} mm",
+                      d.where, m.name, needed, binding.source(), scene.process.punch_travel_mm));
     }
     if (m.kind != MeasurementKind::kLoadTravel && m.x.back() > scene.blank.radius_mm) {
       throw InputError(fmt::format("{}: data set '{}' has r0_mm = {} beyond the blank radius {} mm",
@@ -94,9 +94,10 @@ void check_against_scenes(const CalibrationConfig& config,
         try {
           b.bind(values);
         } catch (const InputError& e) {
-          throw InputError(fmt::format("{}: parameter {} = {} (initial or bound) is rejected by "
-                                       "the scene: {}",
-                                       p.where, p.address, value, e.what()));
+          throw InputError(
+              fmt::format("{}: parameter {} = {} (initial or bound) is rejected by "
+                          "the scene: {}",
+                          p.where, p.address, value, e.what()));
         }
       }
     }
@@ -170,10 +171,11 @@ Eigen::VectorXd CalibrationResult::free_values() const {
 }
 
 std::string CalibrationResult::brief_report() const {
-  std::string text = fmt::format("calibration {}: cost {:.6g} -> {:.6g}, {} iterations, {} forward "
-                                 "runs ({} failed evaluations), {:.2f} s\n",
-                                 to_string(termination), initial_cost, final_cost, iterations,
-                                 forward_runs, failed_evaluations, wall_time_s);
+  std::string text = fmt::format(
+      "calibration {}: cost {:.6g} -> {:.6g}, {} iterations, {} forward "
+      "runs ({} failed evaluations), {:.2f} s\n",
+      to_string(termination), initial_cost, final_cost, iterations, forward_runs,
+      failed_evaluations, wall_time_s);
   if (!message.empty()) text += fmt::format("  {}\n", message);
   std::size_t k = 0;
   for (const auto& p : parameters) {
@@ -184,8 +186,8 @@ std::string CalibrationResult::brief_report() const {
     if (uncertainty_available) {
       const auto& u = uncertainty.parameters.at(k);
       text += fmt::format("  {:32s} {:>14.6g} +- {:<10.3g} 95% [{:.6g}, {:.6g}] {}{}\n",
-                          p.spec.address, p.value, u.std_error, u.interval_lower,
-                          u.interval_upper, p.unit, u.determined ? "" : "  (poorly determined)");
+                          p.spec.address, p.value, u.std_error, u.interval_lower, u.interval_upper,
+                          p.unit, u.determined ? "" : "  (poorly determined)");
     } else {
       text += fmt::format("  {:32s} {:>14.6g} {}\n", p.spec.address, p.value, p.unit);
     }
@@ -260,17 +262,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
     result.fits = make_fits(cache.pipeline(), *final_point);
     const FdJacobian j = objective.jacobian(x);
     if (j.ok) {
-      result.uncertainty =
-          estimate_uncertainty(j.jacobian, final_point->cost, x, objective.scale(),
-                               objective.lower(), objective.upper(), objective.names(),
-                               config.uncertainty);
+      result.uncertainty = estimate_uncertainty(j.jacobian, final_point->cost, x, objective.scale(),
+                                                objective.lower(), objective.upper(),
+                                                objective.names(), config.uncertainty);
       result.uncertainty_available = true;
     } else {
       result.uncertainty_message = "Jacobian at the optimum failed: " + j.message;
     }
   } else {
-    result.uncertainty_message = "the forward model fails at the final point: " +
-                                 final_point->message;
+    result.uncertainty_message =
+        "the forward model fails at the final point: " + final_point->message;
   }
 
   result.forward_runs = cache.forward_runs();

@@ -2,11 +2,10 @@
 // identified parameters with uncertainty, a log of every forward run, and a report folder.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "calibration_config.h"
 #include "forward_cache.h"
@@ -24,9 +23,9 @@ struct CalibrationOptions {
 };
 
 enum class CalibrationTermination {
-  kConverged,      // Ceres met a convergence tolerance
-  kNotConverged,   // iteration limit: the last point is reported but is not an optimum
-  kFailed,         // no usable point (e.g. the forward model fails at the start)
+  kConverged,     // Ceres met a convergence tolerance
+  kNotConverged,  // iteration limit: the last point is reported but is not an optimum
+  kFailed,        // no usable point (e.g. the forward model fails at the start)
 };
 
 std::string to_string(CalibrationTermination termination);
@@ -37,8 +36,8 @@ struct DataSetFit {
   MeasurementKind kind = MeasurementKind::kLoadTravel;
   double travel_mm = 0.0;
   std::vector<double> x, measured, simulated, weight;
-  double cost = 0.0;           // 0.5 sum of weighted squared residuals
-  double rms_difference = 0.0; // sqrt(mean((simulated - measured)^2)), in N or strain
+  double cost = 0.0;            // 0.5 sum of weighted squared residuals
+  double rms_difference = 0.0;  // sqrt(mean((simulated - measured)^2)), in N or strain
   bool ok = false;
 };
 
@@ -54,20 +53,20 @@ struct CalibrationResult {
   double initial_cost = 0.0;
   double final_cost = 0.0;
   int iterations = 0;
-  int forward_runs = 0;            // scene runs started (points x scenes)
-  int failed_evaluations = 0;      // points whose residuals could not be formed
+  int forward_runs = 0;        // scene runs started (points x scenes)
+  int failed_evaluations = 0;  // points whose residuals could not be formed
   double wall_time_s = 0.0;
   CalibrationTermination termination = CalibrationTermination::kFailed;
-  std::string ceres_termination;   // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
-  std::string message;             // why it stopped
+  std::string ceres_termination;  // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
+  std::string message;            // why it stopped
   bool global_search_used = false;
-  GlobalSearchSummary global;      // when used
+  GlobalSearchSummary global;  // when used
   std::vector<DataSetFit> fits;
   bool uncertainty_available = false;
-  UncertaintySummary uncertainty;  // free parameters only, in free order
-  std::string uncertainty_message; // why not available
+  UncertaintySummary uncertainty;   // free parameters only, in free order
+  std::string uncertainty_message;  // why not available
   std::vector<std::shared_ptr<const Evaluation>> evaluations;  // every forward evaluation
-  std::string output_directory;    // where the report went ("" if not written)
+  std::string output_directory;           // where the report went ("" if not written)
   std::vector<std::string> report_notes;  // e.g. plots skipped
 
   // Free parameters' identified values, in free order.

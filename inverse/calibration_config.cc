@@ -1,12 +1,12 @@
 #include "calibration_config.h"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
 #include <cmath>
 #include <filesystem>
 #include <optional>
 #include <set>
-
-#include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include "core/error.h"
 
@@ -102,8 +102,8 @@ std::vector<const toml::table*> table_array(TableReader& reader, const std::stri
   if (!node) return tables;
   const toml::array* array = node->as_array();
   if (!array || !array->is_array_of_tables()) {
-    throw InputError(fmt::format("{}: must be an array of tables ([[{}]])", reader.where_key(key),
-                                 key));
+    throw InputError(
+        fmt::format("{}: must be an array of tables ([[{}]])", reader.where_key(key), key));
   }
   for (const auto& element : *array) tables.push_back(element.as_table());
   return tables;
@@ -113,7 +113,8 @@ std::vector<SceneEntry> read_scenes(TableReader& top, const std::string& file,
                                     const std::string& base_dir) {
   std::vector<SceneEntry> scenes;
   const toml::node* node = top.take("scene");
-  if (!node) throw InputError(fmt::format("{}: key 'scene' (the base scene file) is missing", file));
+  if (!node)
+    throw InputError(fmt::format("{}: key 'scene' (the base scene file) is missing", file));
   if (node->is_string()) {
     scenes.push_back({"scene", resolve(base_dir, *node->value<std::string>()), top.where(*node)});
     return scenes;
@@ -253,9 +254,9 @@ void read_forward(const toml::table* t, const std::string& file, ForwardSettings
   if (const toml::table* set = r.table("set")) {
     for (const auto& [key, node] : *set) {
       const std::string address(key.str());
-      f.overrides.emplace_back(
-          address, value_text(node, fmt::format("{}:{}: key 'forward.set.{}'", file,
-                                                node.source().begin.line, address)));
+      f.overrides.emplace_back(address,
+                               value_text(node, fmt::format("{}:{}: key 'forward.set.{}'", file,
+                                                            node.source().begin.line, address)));
     }
   }
   r.finish();
@@ -329,8 +330,8 @@ void validate_calibration_config(const CalibrationConfig& config) {
     if (config.optimizer.method == OptimizerMethod::kGlobalThenLocal &&
         !(std::isfinite(p.lower) && std::isfinite(p.upper))) {
       throw InputError(fmt::format(
-          "{}: parameter {}: method global_then_local needs finite lower and upper bounds",
-          p.where, p.address));
+          "{}: parameter {}: method global_then_local needs finite lower and upper bounds", p.where,
+          p.address));
     }
   }
   if (free == 0) throw InputError(fmt::format("{}: every parameter is fixed", file));
@@ -343,8 +344,8 @@ void validate_calibration_config(const CalibrationConfig& config) {
     if (m.x.empty()) throw InputError(fmt::format("{}: data set '{}' is empty", d.where, m.name));
     if (m.x.size() != m.y.size() ||
         !(m.point_sigma.empty() || m.point_sigma.size() == m.x.size())) {
-      throw InputError(fmt::format("{}: data set '{}' has columns of different lengths", d.where,
-                                   m.name));
+      throw InputError(
+          fmt::format("{}: data set '{}' has columns of different lengths", d.where, m.name));
     }
     points += m.x.size();
     if (m.name.empty() || m.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQR"
@@ -354,8 +355,8 @@ void validate_calibration_config(const CalibrationConfig& config) {
           d.where, m.name));
     }
     if (!names.insert(m.name).second) {
-      throw InputError(fmt::format("{}: data set name '{}' used twice (set name = ...)", d.where,
-                                   m.name));
+      throw InputError(
+          fmt::format("{}: data set name '{}' used twice (set name = ...)", d.where, m.name));
     }
     if (d.sigma < 0.0 || d.weight < 0.0 || !std::isfinite(d.sigma) || !std::isfinite(d.weight)) {
       throw InputError(fmt::format("{}: sigma and weight must be finite and > 0", d.where));
@@ -378,14 +379,15 @@ void validate_calibration_config(const CalibrationConfig& config) {
     }
     if (config.scenes.size() > 1 ? !scene_names.count(d.scene)
                                  : !(d.scene.empty() || scene_names.count(d.scene))) {
-      throw InputError(fmt::format("{}: data set '{}': scene '{}' is not one of the [[scene]] "
-                                   "names",
-                                   d.where, m.name, d.scene));
+      throw InputError(
+          fmt::format("{}: data set '{}': scene '{}' is not one of the [[scene]] "
+                      "names",
+                      d.where, m.name, d.scene));
     }
   }
   if (points < static_cast<std::size_t>(free)) {
-    throw InputError(fmt::format("{}: {} data points cannot determine {} free parameters", file,
-                                 points, free));
+    throw InputError(
+        fmt::format("{}: {} data points cannot determine {} free parameters", file, points, free));
   }
 
   std::string why;

@@ -38,7 +38,7 @@
 //   confidence = 0.95
 //   scale_by_residual_variance = true
 //   correlation_threshold = 0.95
-//   relative_error_threshold = 0.5
+//   relative_error_threshold = 0.1
 //
 //   [forward]
 //   tolerance = 1e-9                  # overrides numerics.tolerance during calibration

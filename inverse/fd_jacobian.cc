@@ -1,10 +1,10 @@
 #include "fd_jacobian.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <fmt/format.h>
 
 namespace vs {
 namespace {
@@ -188,8 +188,8 @@ FdJacobian fd_jacobian(const Eigen::VectorXd& x, const Eigen::VectorXd& residual
       estimates.push_back(derivative / s.step);
     }
     if (estimates.empty()) continue;  // lower == upper: the column stays zero
-    result.jacobian.col(j) = estimates.size() == 1 ? estimates.front()
-                                                   : ridders_extrapolate(estimates);
+    result.jacobian.col(j) =
+        estimates.size() == 1 ? estimates.front() : ridders_extrapolate(estimates);
   }
   result.ok = true;
   return result;

@@ -5,12 +5,11 @@
 // side is retried one-sided on the other side (second batch) before the Jacobian gives up.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace vs {
 

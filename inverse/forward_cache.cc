@@ -1,13 +1,13 @@
 #include "forward_cache.h"
 
+#include <fmt/format.h>
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <thread>
-
-#include <fmt/format.h>
 
 namespace vs {
 namespace {
@@ -70,8 +70,7 @@ std::vector<std::shared_ptr<const Evaluation>> ForwardCache::evaluate_batch(
       const auto start = std::chrono::steady_clock::now();
       JobResult& out = results[j];
       try {
-        const Scene scene =
-            scenes_[jobs[j].scene].bind(all_values(points[fresh[jobs[j].point]]));
+        const Scene scene = scenes_[jobs[j].scene].bind(all_values(points[fresh[jobs[j].point]]));
         out.run = model_(scene);
       } catch (const std::exception& e) {
         // A value the scene rejects or a model that throws is a failed run, not a crash.
@@ -113,8 +112,8 @@ std::vector<std::shared_ptr<const Evaluation>> ForwardCache::evaluate_batch(
       evaluation->cost = 0.5 * r.values.squaredNorm();
     } else {
       evaluation->cost = std::numeric_limits<double>::quiet_NaN();
-      evaluation->message = r.message + (evaluation->message.empty() ? "" : "; ") +
-                            evaluation->message;
+      evaluation->message =
+          r.message + (evaluation->message.empty() ? "" : "; ") + evaluation->message;
       ++failed_evaluations_;
     }
     while (!evaluation->message.empty() &&

@@ -5,12 +5,11 @@
 // the same whatever the thread count or scheduling.
 #pragma once
 
+#include <Eigen/Core>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "forward_model.h"
 #include "parameter_spec.h"
@@ -21,14 +20,14 @@ namespace vs {
 
 // One evaluated point: what the evaluation log (evaluations.csv) records.
 struct Evaluation {
-  int index = 0;                 // position in the log, 0-based
-  Eigen::VectorXd x;             // free parameters, in their own units
-  bool ok = false;               // residuals available
-  std::string message;           // why not, or notes (e.g. a run that stopped after the data)
+  int index = 0;        // position in the log, 0-based
+  Eigen::VectorXd x;    // free parameters, in their own units
+  bool ok = false;      // residuals available
+  std::string message;  // why not, or notes (e.g. a run that stopped after the data)
   Eigen::VectorXd residuals;
-  double cost = 0.0;             // 0.5 |r|^2 (the Ceres convention); NaN when !ok
-  double wall_time_s = 0.0;      // sum over this point's forward runs
-  std::vector<RunResult> runs;   // one per scene
+  double cost = 0.0;            // 0.5 |r|^2 (the Ceres convention); NaN when !ok
+  double wall_time_s = 0.0;     // sum over this point's forward runs
+  std::vector<RunResult> runs;  // one per scene
 };
 
 class ForwardCache {
@@ -44,7 +43,7 @@ class ForwardCache {
       const std::vector<Eigen::VectorXd>& points);
 
   const std::vector<std::shared_ptr<const Evaluation>>& log() const { return log_; }
-  int forward_runs() const { return forward_runs_; }          // scene runs started
+  int forward_runs() const { return forward_runs_; }  // scene runs started
   int failed_evaluations() const { return failed_evaluations_; }
   int num_free() const { return static_cast<int>(free_.size()); }
   const std::vector<ParameterSpec>& parameters() const { return parameters_; }

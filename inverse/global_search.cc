@@ -1,11 +1,11 @@
 #include "global_search.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-
-#include <fmt/format.h>
 #include <nlopt.hpp>
+#include <stdexcept>
 
 namespace vs {
 namespace {
@@ -72,8 +72,9 @@ const char* result_name(nlopt::result result) {
 bool GlobalSearchOptions::IsValid(std::string* why) const {
   if (algorithm != "mlsl_lds" && algorithm != "crs2" && algorithm != "direct" &&
       algorithm != "bobyqa") {
-    if (why) *why = fmt::format("unknown global algorithm '{}' (mlsl_lds, crs2, direct, bobyqa)",
-                                algorithm);
+    if (why)
+      *why =
+          fmt::format("unknown global algorithm '{}' (mlsl_lds, crs2, direct, bobyqa)", algorithm);
     return false;
   }
   if (max_evaluations < 1) {

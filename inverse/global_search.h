@@ -4,9 +4,8 @@
 // maxeval/maxtime). Evaluations are sequential; the polish that follows is parallel.
 #pragma once
 
-#include <string>
-
 #include <Eigen/Core>
+#include <string>
 
 #include "objective.h"
 

@@ -5,10 +5,9 @@
 // the memoising cache; a failed forward run returns false, and Ceres shrinks its step.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "objective.h"
 
@@ -34,10 +33,10 @@ struct LeastSquaresSummary {
   double initial_cost = 0.0;
   double final_cost = 0.0;
   int iterations = 0;
-  bool converged = false;    // Ceres CONVERGENCE
-  bool usable = false;       // x is a valid evaluated point (CONVERGENCE or NO_CONVERGENCE)
-  std::string termination;   // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
-  std::string message;       // Ceres' reason
+  bool converged = false;   // Ceres CONVERGENCE
+  bool usable = false;      // x is a valid evaluated point (CONVERGENCE or NO_CONVERGENCE)
+  std::string termination;  // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
+  std::string message;      // Ceres' reason
 };
 
 LeastSquaresSummary solve_least_squares(Objective& objective, const Eigen::VectorXd& x0,

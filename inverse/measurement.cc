@@ -1,11 +1,11 @@
 #include "measurement.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 
@@ -85,9 +85,10 @@ Columns parse_header(const std::vector<std::string>& names, MeasurementKind kind
     if (!known) {
       std::string allowed = abscissa_name(kind);
       for (const auto& ordinate : ordinates) allowed += ", " + ordinate.first;
-      throw InputError(fmt::format("{}: unknown or repeated column '{}' for {} data (allowed: {}, "
-                                   "sigma)",
-                                   where, name, to_string(kind), allowed));
+      throw InputError(
+          fmt::format("{}: unknown or repeated column '{}' for {} data (allowed: {}, "
+                      "sigma)",
+                      where, name, to_string(kind), allowed));
     }
   }
   if (columns.abscissa < 0 || columns.ordinate < 0) {
@@ -111,24 +112,21 @@ std::string to_string(MeasurementKind kind) {
   return "?";
 }
 
-MeasurementKind measurement_kind_from_string(const std::string& name,
-                                             const std::string& context) {
+MeasurementKind measurement_kind_from_string(const std::string& name, const std::string& context) {
   for (auto kind : {MeasurementKind::kLoadTravel, MeasurementKind::kThicknessStrain,
                     MeasurementKind::kCircumferentialStrain}) {
     if (to_string(kind) == name) return kind;
   }
   throw InputError(fmt::format(
-      "{}: unknown data kind '{}' (load_travel, thickness_strain, circumferential_strain)",
-      context, name));
+      "{}: unknown data kind '{}' (load_travel, thickness_strain, circumferential_strain)", context,
+      name));
 }
 
 std::string abscissa_name(MeasurementKind kind) {
   return kind == MeasurementKind::kLoadTravel ? "punch_travel_mm" : "r0_mm";
 }
 
-std::string ordinate_name(MeasurementKind kind) {
-  return accepted_ordinates(kind).front().first;
-}
+std::string ordinate_name(MeasurementKind kind) { return accepted_ordinates(kind).front().first; }
 
 Measurement read_measurement_csv(const std::string& path, MeasurementKind kind) {
   std::ifstream in(path);

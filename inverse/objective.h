@@ -2,9 +2,8 @@
 // runs) and their finite-difference Jacobian. The least-squares cost is 0.5 |r|^2.
 #pragma once
 
-#include <memory>
-
 #include <Eigen/Core>
+#include <memory>
 
 #include "fd_jacobian.h"
 #include "forward_cache.h"

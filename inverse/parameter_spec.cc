@@ -1,8 +1,8 @@
 #include "parameter_spec.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace vs {
 

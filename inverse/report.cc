@@ -1,9 +1,9 @@
 #include "report.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <filesystem>
-
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -51,7 +51,8 @@ std::string fit_csv(const DataSetFit& fit) {
     text += fmt::format("# punch travel: {} mm\n", format_number(fit.travel_mm));
   }
   const std::string y = ordinate_name(fit.kind);
-  text += fmt::format("{},{}_measured,{}_simulated,weight,residual\n", abscissa_name(fit.kind), y, y);
+  text +=
+      fmt::format("{},{}_measured,{}_simulated,weight,residual\n", abscissa_name(fit.kind), y, y);
   for (std::size_t i = 0; i < fit.x.size(); ++i) {
     text += fmt::format("{},{},{},{},{}\n", format_number(fit.x[i]), format_number(fit.measured[i]),
                         format_number(fit.simulated[i]), format_number(fit.weight[i]),
@@ -126,10 +127,10 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
   ordered_json parameters = ordered_json::array();
   std::size_t k = 0;
   for (const auto& p : result.parameters) {
-    ordered_json entry = {{"address", p.spec.address},   {"unit", p.unit},
-                          {"fixed", p.spec.fixed},        {"initial", p.spec.initial},
+    ordered_json entry = {{"address", p.spec.address},     {"unit", p.unit},
+                          {"fixed", p.spec.fixed},         {"initial", p.spec.initial},
                           {"lower", number(p.spec.lower)}, {"upper", number(p.spec.upper)},
-                          {"scale", p.spec.scale},        {"value", p.value}};
+                          {"scale", p.spec.scale},         {"value", p.value}};
     if (!p.spec.fixed && result.uncertainty_available) {
       const auto& u = result.uncertainty.parameters.at(k);
       entry["std_error"] = number(u.std_error);
@@ -153,7 +154,8 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
                         {"rank", u.rank},
                         {"condition_number", number(u.condition_number)},
                         {"singular_values", u.singular_values},
-                        {"free_parameters", [&] {
+                        {"free_parameters",
+                         [&] {
                            std::vector<std::string> names;
                            for (const auto& pu : u.parameters) names.push_back(pu.name);
                            return names;
@@ -190,7 +192,8 @@ std::string evaluations_csv(const CalibrationResult& result) {
   for (const auto& e : result.evaluations) {
     text += fmt::format("{},{},{},{}", e->index, e->ok ? "ok" : "failed", format_number(e->cost),
                         format_number(e->wall_time_s));
-    for (Eigen::Index i = 0; i < e->x.size(); ++i) text += fmt::format(",{}", format_number(e->x[i]));
+    for (Eigen::Index i = 0; i < e->x.size(); ++i)
+      text += fmt::format(",{}", format_number(e->x[i]));
     std::string message = e->message;
     for (char& c : message) {
       if (c == '"') c = '\'';
@@ -206,8 +209,8 @@ std::vector<std::string> write_calibration_report(const CalibrationResult& resul
   std::error_code error;
   fs::create_directories(directory, error);
   if (error) {
-    throw InputError(fmt::format("{}: cannot create the output folder: {}", directory,
-                                 error.message()));
+    throw InputError(
+        fmt::format("{}: cannot create the output folder: {}", directory, error.message()));
   }
   std::vector<std::string> notes;
   const fs::path dir(directory);

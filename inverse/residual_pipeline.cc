@@ -1,9 +1,9 @@
 #include "residual_pipeline.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 namespace vs {
 namespace {
@@ -32,8 +32,9 @@ SimulatedCurve load_curve(const Measurement& m, const RunResult& run) {
   }
   const double needed = m.x.back();
   if (travel.back() < needed - 1e-9 * std::max(1.0, needed)) {
-    curve.message = fmt::format("{}: run stopped at {} mm, before the largest measured travel {} mm",
-                                m.name, travel.back(), needed);
+    curve.message =
+        fmt::format("{}: run stopped at {} mm, before the largest measured travel {} mm", m.name,
+                    travel.back(), needed);
     return curve;
   }
   for (double x : m.x) curve.y.push_back(interpolate(travel, force, x));
@@ -57,8 +58,8 @@ SimulatedCurve profile_curve(const Measurement& m, const RunResult& run) {
   const auto& eps = m.kind == MeasurementKind::kThicknessStrain ? profile->eps_thickness
                                                                 : profile->eps_circumferential;
   if (eps.size() != profile->r0_mm.size()) {
-    curve.message = fmt::format("{}: profile at {} mm has inconsistent columns", m.name,
-                                m.travel_mm);
+    curve.message =
+        fmt::format("{}: profile at {} mm has inconsistent columns", m.name, m.travel_mm);
     return curve;
   }
   for (double x : m.x) curve.y.push_back(interpolate(profile->r0_mm, eps, x));

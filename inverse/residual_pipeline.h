@@ -5,10 +5,9 @@
 // (per point or per data set) or a plain weight.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "measurement.h"
 #include "run/run_result.h"
@@ -17,8 +16,8 @@ namespace vs {
 
 struct DataSet {
   Measurement measurement;
-  int scene = 0;                 // index of the scene whose runs this data set is compared with
-  std::vector<double> weights;   // one per point: 1/sigma or the configured weight
+  int scene = 0;                // index of the scene whose runs this data set is compared with
+  std::vector<double> weights;  // one per point: 1/sigma or the configured weight
 };
 
 // Simulated values at a data set's abscissae, or why there are none.

@@ -1,9 +1,9 @@
 #include "scene_binding.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 #include "scene/load_scene.h"

@@ -4,11 +4,11 @@
 // do from the finite-difference worker threads).
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "parameter_spec.h"
 #include "scene/scene.h"

@@ -1,10 +1,10 @@
 #include "synthetic.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 #include "output/number_format.h"
@@ -106,15 +106,16 @@ std::vector<Measurement> make_synthetic_measurements(const Scene& scene, const R
                                scene.source, scene.title)},
         {"units", spec.kind == MeasurementKind::kLoadTravel ? "mm, N" : "mm, 1 (true strain)"},
         {"generating parameters", scene_parameters(scene)},
-        {"noise", sigma > 0.0 ? fmt::format("gaussian, sigma = {} ({} x max|y| + {})",
-                                            format_number(sigma),
-                                            format_number(spec.noise_relative),
-                                            format_number(spec.noise_absolute))
-                              : std::string("none")},
+        {"noise",
+         sigma > 0.0
+             ? fmt::format("gaussian, sigma = {} ({} x max|y| + {})", format_number(sigma),
+                           format_number(spec.noise_relative), format_number(spec.noise_absolute))
+             : std::string("none")},
         {"seed", fmt::format("{} (splitmix64 + Box-Muller, vs::GaussianNoise)", seed)},
     };
     if (spec.kind != MeasurementKind::kLoadTravel) {
-      m.provenance.emplace_back("punch travel", fmt::format("{} mm", format_number(spec.travel_mm)));
+      m.provenance.emplace_back("punch travel",
+                                fmt::format("{} mm", format_number(spec.travel_mm)));
     }
     out.push_back(std::move(m));
   }

@@ -1,10 +1,10 @@
 #include "uncertainty.h"
 
-#include <cmath>
-#include <limits>
+#include <fmt/format.h>
 
 #include <Eigen/SVD>
-#include <fmt/format.h>
+#include <cmath>
+#include <limits>
 
 #include "quantiles.h"
 
@@ -35,10 +35,8 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
 }
 
 UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double cost,
-                                        const Eigen::VectorXd& values,
-                                        const Eigen::VectorXd& scale,
-                                        const Eigen::VectorXd& lower,
-                                        const Eigen::VectorXd& upper,
+                                        const Eigen::VectorXd& values, const Eigen::VectorXd& scale,
+                                        const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                                         const std::vector<std::string>& names,
                                         const UncertaintyOptions& options) {
   const Eigen::Index m = jacobian.rows();
@@ -123,9 +121,9 @@ UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double 
       const double relative = u.std_error / std::max(std::abs(u.value), 1e-300);
       if (relative > options.relative_error_threshold) {
         u.determined = false;
-        out.statements.push_back(fmt::format(
-            "{} is poorly determined: standard error {:.3g} is {:.0f}% of its value", u.name,
-            u.std_error, 100.0 * relative));
+        out.statements.push_back(
+            fmt::format("{} is poorly determined: standard error {:.3g} is {:.0f}% of its value",
+                        u.name, u.std_error, 100.0 * relative));
       }
     }
     if (u.at_bound) {
@@ -151,8 +149,7 @@ UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double 
   }
   if (rank == p && out.condition_number > 1.0 / options.rank_tolerance * 1e-2) {
     out.statements.push_back(fmt::format(
-        "the scaled Jacobian is ill-conditioned (condition number {:.3g})",
-        out.condition_number));
+        "the scaled Jacobian is ill-conditioned (condition number {:.3g})", out.condition_number));
   }
   return out;
 }

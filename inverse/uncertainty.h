@@ -15,10 +15,9 @@
 // user declared typical for each parameter.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace vs {
 
@@ -27,8 +26,10 @@ struct UncertaintyOptions {
   bool scale_by_residual_variance = true;
   // Singular values below rank_tolerance * largest count as zero.
   double rank_tolerance = 1e-8;
-  double correlation_threshold = 0.95;      // |corr| above this: "poorly determined"
-  double relative_error_threshold = 0.5;    // std_error / |value| above this: "poorly determined"
+  double correlation_threshold = 0.95;  // |corr| above this: "poorly determined"
+  // std_error / |value| above this: "poorly determined". 0.1 means a 95 % interval wider than
+  // about +-20 % of the value: too wide to use the number for prediction.
+  double relative_error_threshold = 0.1;
 
   bool IsValid(std::string* why) const;
 };
@@ -36,24 +37,24 @@ struct UncertaintyOptions {
 struct ParameterUncertainty {
   std::string name;
   double value = 0.0;
-  double std_error = 0.0;          // +inf when not determined (null-space direction)
-  double interval_lower = 0.0;     // value -+ quantile * std_error
+  double std_error = 0.0;       // +inf when not determined (null-space direction)
+  double interval_lower = 0.0;  // value -+ quantile * std_error
   double interval_upper = 0.0;
-  bool determined = true;          // false: in the null space, strongly correlated, or huge error
+  bool determined = true;  // false: in the null space, strongly correlated, or huge error
   bool at_bound = false;
 };
 
 struct UncertaintySummary {
   int num_residuals = 0;
   int num_parameters = 0;
-  int degrees_of_freedom = 0;      // m - p
-  double residual_variance = 1.0;  // s^2 used to scale (1 when not scaled)
-  double quantile = 0.0;           // the q of the intervals
-  std::string quantile_kind;       // "student_t(dof)" or "normal"
+  int degrees_of_freedom = 0;           // m - p
+  double residual_variance = 1.0;       // s^2 used to scale (1 when not scaled)
+  double quantile = 0.0;                // the q of the intervals
+  std::string quantile_kind;            // "student_t(dof)" or "normal"
   std::vector<double> singular_values;  // of J * diag(scale), descending
   int rank = 0;
-  double condition_number = 0.0;   // largest / smallest singular value (inf if rank deficient)
-  Eigen::MatrixXd covariance;      // own units; NaN rows/columns for undetermined parameters
+  double condition_number = 0.0;  // largest / smallest singular value (inf if rank deficient)
+  Eigen::MatrixXd covariance;     // own units; NaN rows/columns for undetermined parameters
   Eigen::MatrixXd correlation;
   std::vector<ParameterUncertainty> parameters;
   std::vector<std::string> statements;  // plain-language warnings, empty if all is well
@@ -63,10 +64,8 @@ struct UncertaintySummary {
 // `jacobian` is m x p in the parameters' own units; `cost` = 0.5 |r|^2 at `values`.
 // `lower`/`upper` only serve the at-bound warning.
 UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double cost,
-                                        const Eigen::VectorXd& values,
-                                        const Eigen::VectorXd& scale,
-                                        const Eigen::VectorXd& lower,
-                                        const Eigen::VectorXd& upper,
+                                        const Eigen::VectorXd& values, const Eigen::VectorXd& scale,
+                                        const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,
                                         const std::vector<std::string>& names,
                                         const UncertaintyOptions& options);
 

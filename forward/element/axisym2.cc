@@ -28,6 +28,7 @@ void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
                       const ThicknessRule& rule, const ViscousLaw& law, const Vec6& d,
                       StiffnessKind kind, Axisym2Output* out, double tangent_weight) {
   assert(section.sigma_y != nullptr && section.sigma_y->size() == rule.zeta.size());
+  const bool want_potential = kind == StiffnessKind::kNone;
   const Mat56 B = axisym2_B(g);
   const Vec5 e = B * d;
   const double h = section.thickness_mm;
@@ -44,7 +45,7 @@ void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
     const double w = rule.weight[k] * h;
     const Eigen::Vector2d dk(e(0) + z * e(2), e(1) + z * e(3));
     const double hv = section.hardening_viscosity ? (*section.hardening_viscosity)[k] : 0.0;
-    const ViscousLaw::Point p = law.evaluate((*section.sigma_y)[k], hv, dk);
+    const ViscousLaw::Point p = law.evaluate((*section.sigma_y)[k], hv, dk, want_potential);
     out->point_rate[k] = p.rate;
     N += w * p.stress;
     M += (w * z) * p.stress;

@@ -52,7 +52,7 @@ enum class StiffnessKind { kSecant, kTangent, kNone };
 struct Axisym2Output {
   Vec6 force = Vec6::Zero();             // internal nodal forces (full 360 degrees) [N]
   Mat6 stiffness = Mat6::Zero();         // secant or tangent [N s/mm]
-  double potential = 0.0;                // integral of phi over the element volume [N mm/s]
+  double potential = 0.0;  // integral of phi over the volume [N mm/s]; only with kNone
   Vec5 strain_rate = Vec5::Zero();       // generalised strain rates
   Vec5 stress_resultant = Vec5::Zero();  // N_s, N_t [N/mm]; M_s, M_t [N]; Q [N/mm]
   std::vector<double> point_rate;        // effective strain rate at each thickness point

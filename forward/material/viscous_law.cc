@@ -79,29 +79,31 @@ double ViscousLaw::effective_rate(const Eigen::Vector2d& d) const {
 
 double ViscousLaw::effective_stress(double sigma_y, double e, double hardening_viscosity) const {
   if (is_constant()) return 3.0 * constant_mu_ * e;
-  const double eh = std::hypot(e, cutoff_);
+  const double eh = std::sqrt(e * e + cutoff_ * cutoff_);
   return flow(sigma_y, hardening_viscosity, eh) * e / eh;
 }
 
 ViscousLaw::Point ViscousLaw::evaluate(double sigma_y, double hardening_viscosity,
-                                       const Eigen::Vector2d& d) const {
+                                       const Eigen::Vector2d& d, bool want_potential) const {
   Point p;
   const Eigen::Vector2d Ad = A_ * d;
   const double e = std::sqrt(std::max(d.dot(Ad) / 3.0, 0.0));
   p.rate = e;
   if (is_constant()) {
     p.mu = constant_mu_;
-    p.potential = 1.5 * constant_mu_ * e * e;
+    if (want_potential) p.potential = 1.5 * constant_mu_ * e * e;
   } else {
     // Smooth cut-off: the flow law is evaluated at eh = sqrt(e^2 + e_c^2) and scaled by e/eh,
     // so mu = f(eh) / (3 eh), the potential is F(eh) - F(e_c) (F' = f) and the tangent
     // coefficient (f'(eh) eh - f(eh)) / (9 eh^3) is smooth through e = 0.
     const double hv = hardening_viscosity;
-    const double eh = std::hypot(e, cutoff_);
+    const double eh = std::sqrt(e * e + cutoff_ * cutoff_);
     const double f = flow(sigma_y, hv, eh);
     p.mu = f / (3.0 * eh);
     p.tangent_coef = (flow_slope(sigma_y, hv, eh) * eh - f) / (9.0 * eh * eh * eh);
-    p.potential = antiderivative(sigma_y, hv, eh) - antiderivative(sigma_y, hv, cutoff_);
+    if (want_potential) {
+      p.potential = antiderivative(sigma_y, hv, eh) - antiderivative(sigma_y, hv, cutoff_);
+    }
   }
   p.stress = p.mu * Ad;
   return p;

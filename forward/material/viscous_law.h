@@ -43,7 +43,9 @@ class ViscousLaw {
   // (theta = 1/2, midpoint). It makes the instantaneous problem strictly convex along the flow
   // direction, which a rate-independent point is not, and removes the step-to-step switching
   // between nearly equal mechanisms that frozen (explicit) hardening produces.
-  Point evaluate(double sigma_y, double hardening_viscosity, const Eigen::Vector2d& d) const;
+  // The potential is computed only if asked for (line searches); it is 0 otherwise.
+  Point evaluate(double sigma_y, double hardening_viscosity, const Eigen::Vector2d& d,
+                 bool want_potential = true) const;
 
   // Effective stress at effective rate e (>= 0), smooth cut-off applied.
   double effective_stress(double sigma_y, double e, double hardening_viscosity = 0.0) const;

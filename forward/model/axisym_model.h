@@ -45,7 +45,7 @@ struct AxisymState {
 struct AxisymSystem {
   BlockTridiag K;             // stiffness with prescribed dofs replaced by identity
   Eigen::VectorXd residual;   // at free dofs; zero at prescribed dofs
-  double potential = 0.0;     // flow potential (merit function of the line search)
+  double potential = 0.0;     // flow potential (line-search merit); only with kNone
   Eigen::VectorXd element_force;  // f_el in the global frame (reactions = f_el - f_ext)
   Eigen::VectorXd external_force; // f_ext in the global frame
 };

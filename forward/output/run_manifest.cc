@@ -17,6 +17,7 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"eigen_version", eigen_version()}};
   j["termination"] = s.termination;
   j["message"] = s.message;
+  j["warnings"] = result.warnings;
   j["steps"] = s.steps;
   j["total_iterations"] = s.total_iterations;
   j["total_cutbacks"] = s.total_cutbacks;

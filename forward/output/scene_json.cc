@@ -75,6 +75,10 @@ const char* name(SolverKind kind) {
   return "unknown";
 }
 
+const char* name(TimeIntegration t) {
+  return t == TimeIntegration::kHeun ? "heun" : "euler";
+}
+
 Json tool_json(const ToolSpec& t) {
   Json j;
   j["name"] = t.name;
@@ -138,6 +142,7 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
   const NumericsSpec& n = s.numerics;
   j["numerics"] = {{"thickness_points", n.thickness_points},
                    {"solver", name(n.solver)},
+                   {"time_integration", name(n.time_integration)},
                    {"tolerance", n.tolerance},
                    {"max_iterations", n.max_iterations},
                    {"step_fraction", n.step_fraction},

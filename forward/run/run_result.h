@@ -64,6 +64,7 @@ struct RunResult {
   std::vector<Profile> history;   // every step, if output.history
   Termination termination = Termination::kCompleted;
   std::string message;
+  std::vector<std::string> warnings;  // trust caveats (e.g. elements shorter than the thickness)
   int total_iterations = 0;
   int total_cutbacks = 0;
   RunTimings timings;

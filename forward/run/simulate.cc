@@ -6,6 +6,7 @@
 #include "run/simulate.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -43,14 +44,23 @@ class Driver {
   Driver(const Scene& scene, const RunOptions& options)
       : scene_(scene), options_(options), model_(scene) {
     contact_tol_ = 1e-8 * scene.blank.thickness_mm;
+    attach_tol_ = 1e-2 * scene.blank.thickness_mm;
     nl_.kind = scene.numerics.solver;
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
     nl_.verbose = options.verbose;
+    // Steps end on a fixed travel grid (multiples of the travel cap) and at the output travels;
+    // contact events split grid intervals. The step sequence then moves continuously with the
+    // material and friction parameters, which keeps outputs smooth for calibration.
+    const double total = scene.process.punch_travel_mm;
+    const double inc = scene.numerics.max_travel_increment_mm;
     targets_ = scene.process.output_travels_mm;
-    if (targets_.empty() || targets_.back() < scene.process.punch_travel_mm) {
-      targets_.push_back(scene.process.punch_travel_mm);
-    }
+    for (double tr = inc; tr < total * (1.0 - 1e-12); tr += inc) targets_.push_back(tr);
+    targets_.push_back(total);
+    std::sort(targets_.begin(), targets_.end());
+    targets_.erase(std::unique(targets_.begin(), targets_.end(),
+                               [&](double a, double b) { return std::abs(a - b) <= 1e-9 * total; }),
+                   targets_.end());
   }
 
   RunResult run();
@@ -64,6 +74,10 @@ class Driver {
   // dt_predicted: step size expected after this solve (for the hardening seen by the solve).
   bool solve(Solved* out, double dt_predicted, std::string* why);
   bool advance(const Solved& from, double dt, AxisymState* to, std::string* why);
+  // Element thickness from its constant volume and current geometry; false if degenerate.
+  bool update_thickness(AxisymState& s, std::string* why) const;
+  // One step of size dt from a converged configuration to the next converged one.
+  bool take_step(const Solved& from, double dt, Solved* to, std::string* why);
   double choose_dt(const Solved& from, double cap_factor, std::vector<char>* released) const;
   double travel(const AxisymState& s) const {
     return s.time_s * scene_.process.punch_speed_mm_per_s;
@@ -74,7 +88,8 @@ class Driver {
   AxisymModel model_;
   NonlinearOptions nl_;
   std::vector<double> targets_;
-  double contact_tol_ = 0.0;
+  double contact_tol_ = 0.0;  // gap below which a node touches a tool
+  double attach_tol_ = 0.0;   // search tolerance next to a touching neighbour
   std::vector<char> released_;  // nodes released by the last solve (no immediate re-contact)
   RunTimings timings_;
 };
@@ -109,10 +124,21 @@ void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released
     }
     if (!released.empty() && released[i]) continue;
     int best = -1;
-    double best_gap = contact_tol_;
+    double best_gap = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < model_.tools().size(); ++t) {
       const double g = model_.tools()[t].gap(s.x[i], model_.node_thickness(s, i));
-      if (g <= best_gap) {
+      // Search tolerance: touching, or within a small fraction of the thickness of a tool that
+      // a neighbour touches. Without it a node that lifted off by micrometres (a rigid band
+      // riding on the punch) is never pulled back, and the contact patch breaks up.
+      // Only holes inside a patch are filled this way (both neighbours touch the tool; on the
+      // axis the one neighbour): the front of a patch advances by exact contact events, so
+      // outputs stay smooth functions of the parameters.
+      const int ti = static_cast<int>(t);
+      const bool next = i + 1 < model_.num_nodes() && s.contact[i + 1].tool == ti;
+      const bool prev = (i == 0 && model_.initial_radius(0) == 0.0) ? next
+                                                                     : (i > 0 && s.contact[i - 1].tool == ti);
+      const double tol = (next && prev) ? attach_tol_ : contact_tol_;
+      if (g <= tol && g < best_gap) {
         best_gap = g;
         best = static_cast<int>(t);
       }
@@ -147,14 +173,32 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     const std::vector<double>& N = problem.normal_reactions();
     double scale = 0.0;
     for (int i = 0; i < model_.num_nodes(); ++i) scale = std::max(scale, std::abs(N[i]));
-    bool any = false;
+    // Only a node at the edge of its contact patch may separate, and only if its reaction,
+    // averaged with its neighbours on the same tool (weights 1/4, 1/2, 1/4; the axis node is its
+    // own mirror image), pulls on the tool. A bending-stiff shell on a faceted contact picks up
+    // alternating (checkerboard) nodal reactions once elements are shorter than the thickness;
+    // releasing on the raw reaction makes the contact set chatter and the patch break up.
+    auto same_tool = [&](int j, int tool) {
+      return j >= 0 && j < model_.num_nodes() && s.contact[j].tool == tool;
+    };
+    std::vector<int> release;
     for (int i = 0; i < model_.num_nodes(); ++i) {
-      if (s.contact[i].tool >= 0 && N[i] < -kReleaseFraction * scale) {
-        s.contact[i] = NodeContact{};
-        released_[i] = 1;
-        any = true;
-      }
+      const int tool = s.contact[i].tool;
+      if (tool < 0) continue;
+      const bool on_axis = i == 0 && model_.initial_radius(0) == 0.0;
+      const bool next = same_tool(i + 1, tool);
+      const bool prev = on_axis ? next : same_tool(i - 1, tool);
+      if (next && prev) continue;  // interior: the patch shrinks from its edges
+      double smoothed = 0.5 * N[i];
+      smoothed += 0.25 * (next ? N[i + 1] : N[i]);
+      smoothed += 0.25 * (prev ? N[on_axis ? i + 1 : i - 1] : N[i]);
+      if (smoothed < -kReleaseFraction * scale) release.push_back(i);
     }
+    for (int i : release) {
+      s.contact[i] = NodeContact{};
+      released_[i] = 1;
+    }
+    const bool any = !release.empty();
     out->active_set_rounds = round + 1;
     if (!any) {
       out->punch_force = problem.punch_force();
@@ -172,9 +216,6 @@ double Driver::choose_dt(const Solved& from, double cap_factor,
                          std::vector<char>* /*released*/) const {
   const double V = scene_.process.punch_speed_mm_per_s;
   const double T = travel(from.state);
-  double cap = scene_.numerics.max_travel_increment_mm / V;
-  if (from.max_rate > 0.0) cap = std::min(cap, scene_.numerics.max_strain_increment / from.max_rate);
-  cap *= cap_factor;
   double dt_target = std::numeric_limits<double>::infinity();
   for (double tr : targets_) {
     if (tr > T * (1.0 + 1e-12) + 1e-12) {
@@ -182,7 +223,13 @@ double Driver::choose_dt(const Solved& from, double cap_factor,
       break;
     }
   }
-  if (dt_target <= cap * (1.0 + 1e-9)) cap = dt_target;
+  // Strain cap: equal sub-steps to the next grid point; a cut-back divides further.
+  double cap = dt_target;
+  if (from.max_rate > 0.0) {
+    const double strain_dt = scene_.numerics.max_strain_increment / from.max_rate;
+    cap = dt_target / std::ceil(dt_target / strain_dt * (1.0 - 1e-12));
+  }
+  cap *= cap_factor;
   // Next contact event (paper eq. 53, any tool, any free node), looked for a little beyond the
   // cap so that the step fraction can approach it gradually.
   const double frac = scene_.numerics.step_fraction;
@@ -216,6 +263,10 @@ bool Driver::advance(const Solved& from, double dt, AxisymState* to, std::string
   }
   s.time_s += dt;
   maintain_contacts(s, released_);
+  return update_thickness(s, why);
+}
+
+bool Driver::update_thickness(AxisymState& s, std::string* why) const {
   // Thickness from the constant element volume (exact incompressibility; numerics.md 3.6).
   for (int e = 0; e < model_.num_elements(); ++e) {
     const Axisym2Geometry g = model_.geometry(s, e);
@@ -230,9 +281,52 @@ bool Driver::advance(const Solved& from, double dt, AxisymState* to, std::string
   return true;
 }
 
+bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* why) {
+  if (scene_.numerics.time_integration == TimeIntegration::kEuler) {
+    return advance(from, dt, &to->state, why) && solve(to, dt, why);
+  }
+  // Heun (explicit trapezoidal rule): predict with the start velocity, solve there, then redo the
+  // update with the mean of both velocities and strain rates. The plain forward update lags the
+  // moving contact front by a whole step, which costs O(dt) in the strain distribution with a
+  // large constant; the corrected update is second order.
+  Solved pred;
+  if (!advance(from, dt, &pred.state, why) || !solve(&pred, dt, why)) return false;
+  Solved mid;
+  mid.state = from.state;
+  mid.state.v = 0.5 * (from.state.v + pred.state.v);
+  mid.point_rates = from.point_rates;
+  for (std::size_t e = 0; e < mid.point_rates.size(); ++e) {
+    for (std::size_t k = 0; k < mid.point_rates[e].size(); ++k) {
+      mid.point_rates[e][k] = 0.5 * (from.point_rates[e][k] + pred.point_rates[e][k]);
+    }
+  }
+  if (!advance(mid, dt, &to->state, why)) return false;
+  // Nodes the predictor found touching at the end of the step touch in the corrected state too.
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    const int tool = pred.state.contact[i].tool;
+    if (tool >= 0 && to->state.contact[i].tool < 0 && eligible(i)) attach(to->state, i, tool);
+  }
+  if (!update_thickness(to->state, why)) return false;
+  to->state.v = pred.state.v;  // the best start for the corrected solve
+  return solve(to, dt, why);
+}
+
+// Consecutive cut-back steps after which a run is stopped as collapsing.
+constexpr int kMaxStepsWithCutbacks = 25;
+
 RunResult Driver::run() {
   const auto t_start = Clock::now();
   RunResult result;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < model_.num_elements(); ++e) shortest = std::min(shortest, model_.initial_length(e));
+  if (shortest < scene_.blank.thickness_mm) {
+    // A shell discretisation finer than the thickness resolves nothing real and makes the nodal
+    // contact reactions oscillate (measured: ex1 thinning stops converging below l = h).
+    result.warnings.push_back(fmt::format(
+        "shortest element {:.3g} mm is shorter than the thickness {:.3g} mm: contact reactions "
+        "oscillate and strain profiles become noisy; use fewer elements",
+        shortest, scene_.blank.thickness_mm));
+  }
   Solved current;
   current.state = model_.initial_state();
   maintain_contacts(current.state, {});
@@ -241,6 +335,7 @@ RunResult Driver::run() {
   if (!solve(&current, scene_.numerics.max_travel_increment_mm / V, &why)) {
     result.termination = Termination::kFailed;
     result.message = "the first step did not converge: " + why;
+    result.profiles.push_back(make_profile(model_, current.state, 0.0, {}));
     timings_.total_s = seconds_since(t_start);
     result.timings = timings_;
     return result;
@@ -250,6 +345,7 @@ RunResult Driver::run() {
   const auto& outputs = scene_.process.output_travels_mm;
   double cap_factor = 1.0;
   int cutbacks_since_success = 0;
+  int steps_with_cutbacks = 0;  // consecutive steps that needed a cut-back
   for (int step = 0;; ++step) {
     // Record the converged configuration.
     const double T = travel(current.state);
@@ -279,9 +375,8 @@ RunResult Driver::run() {
     while (!ok) {
       const auto t0 = Clock::now();
       const double dt = choose_dt(current, cap_factor, nullptr);
-      const bool advanced = advance(current, dt, &next.state, &why);
       timings_.contact_s += seconds_since(t0);
-      ok = advanced && solve(&next, dt, &why);
+      ok = take_step(current, dt, &next, &why);
       if (ok) break;
       if (cutbacks_since_success >= scene_.numerics.max_cutbacks) {
         result.termination = Termination::kFailed;
@@ -303,11 +398,26 @@ RunResult Driver::run() {
       released_.assign(model_.num_nodes(), 0);
     }
     cap_factor = std::min(1.0, 2.0 * cap_factor);
+    steps_with_cutbacks = cutbacks_since_success > 0 ? steps_with_cutbacks + 1 : 0;
+    if (steps_with_cutbacks >= kMaxStepsWithCutbacks) {
+      // Every step fails at first and creeps on with tiny increments: the run would take for
+      // ever without a trustworthy answer. Stop and say so.
+      result.termination = Termination::kFailed;
+      result.message = fmt::format(
+          "stopped at punch travel {:.4f} mm: {} consecutive steps needed cut-backs (last: {}); "
+          "the step size keeps collapsing",
+          travel(next.state), steps_with_cutbacks, why);
+      current = std::move(next);
+      break;
+    }
     current = std::move(next);
   }
-  result.profiles.push_back(make_profile(model_, current.state, travel(current.state), current.resultants));
-  result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
-                               travel(current.state), result.steps.size());
+  result.profiles.push_back(
+      make_profile(model_, current.state, travel(current.state), current.resultants));
+  if (result.completed()) {
+    result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
+                                 travel(current.state), result.steps.size());
+  }
   timings_.total_s = seconds_since(t_start);
   result.timings = timings_;
   return result;

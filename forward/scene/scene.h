@@ -98,13 +98,19 @@ enum class SolverKind {
   kPicard,  // the paper's direct (secant) iteration only
 };
 
+enum class TimeIntegration {
+  kHeun,   // explicit trapezoidal predictor-corrector: two velocity solves per step, O(dt^2)
+  kEuler,  // the paper's forward update with the start-of-step velocity: O(dt)
+};
+
 struct NumericsSpec {
   int thickness_points = 5;              // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
+  TimeIntegration time_integration = TimeIntegration::kHeun;
   double tolerance = 1e-6;               // relative velocity change and relative residual
   int max_iterations = 100;              // per step, before the step is cut back
-  double step_fraction = 0.5;            // fraction of the contact-event step taken when far
-  double max_travel_increment_mm = 0.5;  // cap on punch travel per step
+  double step_fraction = 1.0;            // fraction of the contact-event step taken when far
+  double max_travel_increment_mm = 0.25;  // cap on punch travel per step
   double max_strain_increment = 0.02;    // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;      // cut-off rate, relative to punch_speed / blank radius
   double friction_regularisation = 1e-4; // Coulomb arctan velocity, relative to punch speed

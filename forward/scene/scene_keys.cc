@@ -235,6 +235,10 @@ std::vector<KeySpec> build_keys() {
   add(choice(nu, "solver", enum_field<&numerics, &NumericsSpec::solver>(), {"newton", "picard"},
              "newton: direct iterations then Newton with line search; picard: the paper's "
              "direct iteration only."));
+  add(choice(nu, "time_integration",
+             enum_field<&numerics, &NumericsSpec::time_integration>(), {"heun", "euler"},
+             "heun: predictor-corrector geometry update (two solves per step, second order); "
+             "euler: the paper's update with the start-of-step velocity (first order)."));
   add(make(nu, "tolerance", kFloat, float_field<&numerics, &NumericsSpec::tolerance>(), "",
            closed(1e-12, 0.1), "Relative velocity change and relative residual."));
   add(make(nu, "max_iterations", kInt, int_field<&numerics, &NumericsSpec::max_iterations>(), "",

@@ -33,10 +33,10 @@ Mat3 anisotropy_matrix3(double r_value);
 double r_value_of(const ViscousLaw& law);
 
 struct InPlanePoint {
-  double rate = 0.0;          // effective strain rate e [1/s]
-  double mu = 0.0;            // secant viscosity [MPa s]
-  double tangent_coef = 0.0;  // D_tan = mu A + tangent_coef (A d)(A d)^T
-  double potential = 0.0;     // phi(e) [MPa/s]
+  double rate = 0.0;           // effective strain rate e [1/s]
+  double mu = 0.0;             // secant viscosity [MPa s]
+  double tangent_coef = 0.0;   // D_tan = mu A + tangent_coef (A d)(A d)^T
+  double potential = 0.0;      // phi(e) [MPa/s]
   Vec3 stress = Vec3::Zero();  // (s11, s22, s12) [MPa]
 };
 

@@ -1,5 +1,6 @@
 #include "shell3d/shell9.h"
 
+#include <Eigen/Geometry>
 #include <cassert>
 #include <optional>
 
@@ -145,6 +146,7 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
         const double dz = 0.5 * pb.h * wt;
         R.N += dz * p.stress;
         R.M += (dz * 0.5 * t * pb.h) * p.stress;
+        if (k == nt / 2) R.frame = pb.frame;  // the middle thickness point (or nearest above)
         if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, 0.5 * pb.h * wt, ip);
       }
     }

@@ -32,9 +32,9 @@ inline constexpr double kShellShearCorrection = 5.0 / 6.0;
 
 struct Shell9Material {
   bool viscous = false;
-  double young = 0.0, poisson = 0.5;         // elastic
-  const HillPlaneStressLaw* law = nullptr;   // viscous (not owned)
-  double shear_viscosity = 0.0;              // viscous: transverse-shear penalty viscosity
+  double young = 0.0, poisson = 0.5;        // elastic
+  const HillPlaneStressLaw* law = nullptr;  // viscous (not owned)
+  double shear_viscosity = 0.0;             // viscous: transverse-shear penalty viscosity
   double shear_correction = kShellShearCorrection;
   // Artificial drilling stiffness at 6-dof nodes: drill_scale * G_ref * h_a * (element area) / 9
   // for each such node (G_ref = G or shear_viscosity).
@@ -55,17 +55,18 @@ struct Shell9State {
 enum class Shell9Stiffness { kSecant, kTangent, kNone };
 
 struct Shell9Resultant {
-  Vec3 N = Vec3::Zero();  // membrane forces (N11, N22, N12) [N/mm], local frame
-  Vec3 M = Vec3::Zero();  // moments int s z dz [N], z along e3
+  Vec3 N = Vec3::Zero();          // membrane forces (N11, N22, N12) [N/mm], local frame
+  Vec3 M = Vec3::Zero();          // moments int s z dz [N], z along e3
+  Mat3 frame = Mat3::Identity();  // local frame (columns e1, e2, e3) at the mid-surface
 };
 
 struct Shell9Output {
-  Eigen::VectorXd force;      // internal nodal forces, element dofs
-  Eigen::MatrixXd stiffness;  // secant or tangent
-  double potential = 0.0;     // integral of the power potential (elastic: strain energy)
-  std::vector<double> point_rate;             // effective rate at each flow point (viscous)
-  std::vector<Shell9Resultant> resultant;     // at each in-plane (flow) point
-  std::vector<Eigen::Vector2d> shear_force;   // (Q13, Q23) [N/mm] at each shear point
+  Eigen::VectorXd force;           // internal nodal forces, element dofs
+  Eigen::MatrixXd stiffness;       // secant or tangent
+  double potential = 0.0;          // integral of the power potential (elastic: strain energy)
+  std::vector<double> point_rate;  // effective rate at each flow point (viscous)
+  std::vector<Shell9Resultant> resultant;    // at each in-plane (flow) point
+  std::vector<Eigen::Vector2d> shear_force;  // (Q13, Q23) [N/mm] at each shear point
 };
 
 // Number of in-plane points of the flow (membrane/bending) rule: 9, or 4 for kReduced.

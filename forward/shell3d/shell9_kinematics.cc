@@ -97,8 +97,8 @@ Mat5 local_transform(const Mat3& C) {
     const double f = (a == b) ? 1.0 : 2.0;
     for (int col = 0; col < 5; ++col) {
       const int i = kPairs[col][0], j = kPairs[col][1];
-      T(row, col) = (i == j) ? f * C(i, a) * C(i, b)
-                             : 0.5 * f * (C(i, a) * C(j, b) + C(j, a) * C(i, b));
+      T(row, col) =
+          (i == j) ? f * C(i, a) * C(i, b) : 0.5 * f * (C(i, a) * C(j, b) + C(j, a) * C(i, b));
     }
   }
   return T;

@@ -51,11 +51,11 @@ Mat3 rot_map_5dof(const Vec3& v1, const Vec3& v2);
 Mat3 rot_map_6dof(const Vec3& v3);
 
 struct PointBasis {
-  Mat3 J;        // columns g_r, g_s, g_t
-  double detJ;   // dV = detJ dr ds dt
-  Mat3 frame;    // columns e1, e2, e3
-  Mat3 C;        // C(i, a) = g^i . e_a
-  double h;      // interpolated thickness
+  Mat3 J;       // columns g_r, g_s, g_t
+  double detJ;  // dV = detJ dr ds dt
+  Mat3 frame;   // columns e1, e2, e3
+  Mat3 C;       // C(i, a) = g^i . e_a
+  double h;     // interpolated thickness
 };
 
 PointBasis point_basis(const Shell9Geometry& g, const Shape9& sh, double t);

@@ -34,8 +34,8 @@ ShellMesh quad9_from_quad4(const std::vector<Eigen::Vector3d>& corners,
     const auto it = edge_node.find(key);
     if (it != edge_node.end()) return it->second;
     const int id = m.num_nodes();
-    m.nodes.push_back(0.5 * (corners[static_cast<std::size_t>(a)] +
-                             corners[static_cast<std::size_t>(b)]));
+    m.nodes.push_back(
+        0.5 * (corners[static_cast<std::size_t>(a)] + corners[static_cast<std::size_t>(b)]));
     edge_node.emplace(key, id);
     return id;
   };

@@ -2,12 +2,12 @@
 // covariance, undetermined parameters, failing forward runs, thread-count independence.
 #include "calibrate.h"
 
-#include <atomic>
-#include <cmath>
-
-#include <Eigen/Dense>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <atomic>
+#include <cmath>
 
 #include "inverse_test_support.h"
 #include "scene/load_scene.h"
@@ -189,8 +189,10 @@ TEST(Calibrate, LinearModelCovarianceIsExact) {
   Eigen::VectorXd r(30);
   for (int i = 0; i < 30; ++i) r[i] = (x[0] + 1000.0 * x[1] * (i + 1) - m.y[i]) / sigma;
   // Least squares optimum: normal equations hold.
-  const Eigen::VectorXd x_exact = (j.transpose() * j).ldlt().solve(
-      j.transpose() * Eigen::Map<const Eigen::VectorXd>(m.y.data(), 30) / sigma);
+  const Eigen::VectorXd x_exact =
+      (j.transpose() * j)
+          .ldlt()
+          .solve(j.transpose() * Eigen::Map<const Eigen::VectorXd>(m.y.data(), 30) / sigma);
   EXPECT_NEAR(x[0], x_exact[0], 1e-6 * std::abs(x_exact[0]));
   EXPECT_NEAR(x[1], x_exact[1], 1e-6 * std::abs(x_exact[1]));
   const Eigen::MatrixXd cov = (j.transpose() * j).inverse() * r.squaredNorm() / 28.0;

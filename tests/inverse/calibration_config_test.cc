@@ -2,9 +2,9 @@
 // forward run (the fake counts its calls).
 #include "calibration_config.h"
 
-#include <atomic>
-
 #include <gtest/gtest.h>
+
+#include <atomic>
 
 #include "calibrate.h"
 #include "core/error.h"
@@ -164,7 +164,8 @@ TEST_F(ConfigTest, BadConfigurationsFailBeforeAnyForwardRun) {
   };
   const std::string good = kGoodConfig;
   write_file(dir_ / "empty.csv", "");
-  write_file(dir_ / "header_only.csv", "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n");
+  write_file(dir_ / "header_only.csv",
+             "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n");
   write_file(dir_ / "non_monotone.csv",
              "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,1\n3,2\n2,3\n");
   write_file(dir_ / "no_units.csv", "# source: t\npunch_travel_mm,punch_force_N\n1,1\n");
@@ -189,8 +190,7 @@ TEST_F(ConfigTest, BadConfigurationsFailBeforeAnyForwardRun) {
        "non_monotone.csv:6: punch_travel_mm = 2 does not increase"},
       {"units missing", replace(good, "file = \"load.csv\"", "file = \"no_units.csv\""),
        "# units:"},
-      {"missing file", replace(good, "file = \"load.csv\"", "file = \"nope.csv\""),
-       "cannot open"},
+      {"missing file", replace(good, "file = \"load.csv\"", "file = \"nope.csv\""), "cannot open"},
       {"no weight", replace(good, "sigma = 50.0", ""), "needs sigma"},
       {"profile without travel", replace(good, "travel_mm = 20", ""), "needs travel_mm"},
       {"travel beyond the scene", replace(good, "travel_mm = 20", "travel_mm = 40"),

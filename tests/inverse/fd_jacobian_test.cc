@@ -1,8 +1,8 @@
 #include "fd_jacobian.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace vs {
 namespace {

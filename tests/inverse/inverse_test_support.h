@@ -2,14 +2,14 @@
 // (fast, smooth, thread-safe) and helpers to write configs and CSVs into a scratch folder.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "calibration_config.h"
 #include "forward_model.h"
@@ -149,8 +149,8 @@ struct LinearFake {
     for (int k = 1; k <= 60; ++k) {
       StepRecord s;
       s.punch_travel_mm = 0.5 * k;
-      s.punch_force_N = scene.material.hardening.K_MPa + 1000.0 * punch_friction(scene) *
-                                                             s.punch_travel_mm;
+      s.punch_force_N =
+          scene.material.hardening.K_MPa + 1000.0 * punch_friction(scene) * s.punch_travel_mm;
       run.steps.push_back(s);
     }
     return run;

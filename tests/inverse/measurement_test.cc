@@ -27,8 +27,8 @@ TEST(Measurement, ReadsLoadCurveInKilonewtonsWithSigma) {
                                    "# lubricant: none\n"
                                    "punch_travel_mm, punch_force_kN, sigma\n"
                                    "1.0, 2.5, 0.1\n\n2.0,3.5,0.1\n");
-  const Measurement m = read_measurement_csv((dir / "load.csv").string(),
-                                             MeasurementKind::kLoadTravel);
+  const Measurement m =
+      read_measurement_csv((dir / "load.csv").string(), MeasurementKind::kLoadTravel);
   ASSERT_EQ(m.x.size(), 2u);
   EXPECT_DOUBLE_EQ(m.y[1], 3500.0);
   EXPECT_DOUBLE_EQ(m.point_sigma[0], 100.0);
@@ -39,8 +39,8 @@ TEST(Measurement, ReadsLoadCurveInKilonewtonsWithSigma) {
 TEST(Measurement, ReadsProfileColumnsInAnyOrder) {
   const fs::path dir = scratch_dir();
   write_file(dir / "t.csv", "# source: s\n# units: mm, 1\neps_thickness,r0_mm\n-0.1,0\n-0.2,5\n");
-  const Measurement m = read_measurement_csv((dir / "t.csv").string(),
-                                             MeasurementKind::kThicknessStrain);
+  const Measurement m =
+      read_measurement_csv((dir / "t.csv").string(), MeasurementKind::kThicknessStrain);
   EXPECT_DOUBLE_EQ(m.x[1], 5.0);
   EXPECT_DOUBLE_EQ(m.y[1], -0.2);
 }
@@ -65,7 +65,8 @@ TEST(Measurement, RejectsBadFiles) {
       {"repeated_x", h + "punch_travel_mm,punch_force_N\n1,2\n1,4\n", "does not increase"},
       {"missing_units", "# source: x\npunch_travel_mm,punch_force_N\n1,2\n", "# units:"},
       {"missing_source", "# units: mm, N\npunch_travel_mm,punch_force_N\n1,2\n", "# source:"},
-      {"unknown_column", h + "punch_travel_mm,punch_force_lbf\n1,2\n", "unknown or repeated column"},
+      {"unknown_column", h + "punch_travel_mm,punch_force_lbf\n1,2\n",
+       "unknown or repeated column"},
       {"missing_column", h + "punch_travel_mm\n1\n", "needs columns"},
       {"wrong_count", h + "punch_travel_mm,punch_force_N\n1,2,3\n", "expected 2"},
       {"bad_sigma", h + "punch_travel_mm,punch_force_N,sigma\n1,2,0\n", "sigma must be > 0"},

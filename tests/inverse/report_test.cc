@@ -1,10 +1,10 @@
 #include "report.h"
 
-#include <fstream>
-#include <sstream>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "calibrate.h"
 #include "inverse_test_support.h"

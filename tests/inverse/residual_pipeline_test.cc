@@ -30,8 +30,8 @@ TEST(ResidualPipeline, InterpolatesLoadFromTheOriginAndWeights) {
   ResidualPipeline pipeline({{m, 0, {0.1, 0.1, 1.0}}});
   const auto r = pipeline.residuals({ramp_run(4.0)});
   ASSERT_TRUE(r.ok);
-  EXPECT_DOUBLE_EQ(r.values[0], 0.1 * 50.0);   // between (0,0) and (1,100)
-  EXPECT_DOUBLE_EQ(r.values[1], 0.1 * 50.0);   // (400 + 900) / 2 - 600
+  EXPECT_DOUBLE_EQ(r.values[0], 0.1 * 50.0);  // between (0,0) and (1,100)
+  EXPECT_DOUBLE_EQ(r.values[1], 0.1 * 50.0);  // (400 + 900) / 2 - 600
   EXPECT_DOUBLE_EQ(r.values[2], 0.0);
 }
 

@@ -1,8 +1,8 @@
 #include "synthetic.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/error.h"
 #include "inverse_test_support.h"
@@ -38,8 +38,8 @@ TEST(Synthetic, MeasurementsCarryProvenanceAndRoundTrip) {
        {MeasurementKind::kThicknessStrain, "thick", 10.0, {}, 0.0, 0.001}},
       9);
   ASSERT_EQ(data.size(), 2u);
-  EXPECT_EQ(data[0].x.size(), run.steps.size());   // default abscissae: the run's steps
-  EXPECT_EQ(data[1].x, run.profiles[0].r0_mm);     // ... and element midpoints
+  EXPECT_EQ(data[0].x.size(), run.steps.size());  // default abscissae: the run's steps
+  EXPECT_EQ(data[1].x, run.profiles[0].r0_mm);    // ... and element midpoints
   EXPECT_NE(data[0].provenance[0].second.find("SYNTHETIC"), std::string::npos);
   EXPECT_DOUBLE_EQ(data[1].point_sigma[0], 0.001);
   for (const auto& m : data) {

@@ -1,9 +1,9 @@
 #include "uncertainty.h"
 
-#include <cmath>
+#include <gtest/gtest.h>
 
 #include <Eigen/Dense>
-#include <gtest/gtest.h>
+#include <cmath>
 
 #include "quantiles.h"
 
@@ -59,9 +59,9 @@ TEST(Uncertainty, UnscaledUsesTheStatedSigmasAndTheNormalQuantile) {
 TEST(Uncertainty, ZeroColumnIsNotDetermined) {
   Eigen::MatrixXd j(5, 3);
   j << 1, 0, 0.5, 2, 0, 1, 3, 0, -1, 4, 0, 2, 5, 0, 0.1;
-  const auto u = estimate_uncertainty(j, 0.1, Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1),
-                                      unbounded(-1, 3), unbounded(1, 3), kNames,
-                                      UncertaintyOptions{});
+  const auto u =
+      estimate_uncertainty(j, 1e-6, Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, 1),
+                           unbounded(-1, 3), unbounded(1, 3), kNames, UncertaintyOptions{});
   EXPECT_EQ(u.rank, 2);
   EXPECT_TRUE(std::isinf(u.condition_number));
   EXPECT_TRUE(u.parameters[0].determined);
@@ -74,9 +74,9 @@ TEST(Uncertainty, ZeroColumnIsNotDetermined) {
 TEST(Uncertainty, NearlyCollinearColumnsAreFlagged) {
   Eigen::MatrixXd j(6, 2);
   for (int i = 0; i < 6; ++i) j.row(i) << 1.0 + i, (1.0 + i) * (1.0 + 1e-3 * (i % 2));
-  const auto u = estimate_uncertainty(j, 1e-4, Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 1),
-                                      unbounded(-1, 2), unbounded(1, 2), {"a", "b"},
-                                      UncertaintyOptions{});
+  const auto u =
+      estimate_uncertainty(j, 1e-4, Eigen::Vector2d(1, 1), Eigen::Vector2d(1, 1), unbounded(-1, 2),
+                           unbounded(1, 2), {"a", "b"}, UncertaintyOptions{});
   EXPECT_EQ(u.rank, 2);
   EXPECT_GT(std::abs(u.correlation(0, 1)), 0.95);
   EXPECT_FALSE(u.parameters[0].determined);
@@ -86,9 +86,9 @@ TEST(Uncertainty, NearlyCollinearColumnsAreFlagged) {
 TEST(Uncertainty, ParameterOnABoundIsFlagged) {
   Eigen::MatrixXd j(3, 1);
   j << 1, 2, 3;
-  const auto u = estimate_uncertainty(j, 0.01, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1),
-                                      Eigen::VectorXd::Zero(1), unbounded(1, 1), {"mu"},
-                                      UncertaintyOptions{});
+  const auto u =
+      estimate_uncertainty(j, 0.01, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Ones(1),
+                           Eigen::VectorXd::Zero(1), unbounded(1, 1), {"mu"}, UncertaintyOptions{});
   EXPECT_TRUE(u.parameters[0].at_bound);
 }
 

@@ -76,7 +76,8 @@ TEST(RunWriter, ManifestHasSceneProgramAndResults) {
   EXPECT_EQ(scene["tools"][0]["friction"], "sticking");
   EXPECT_DOUBLE_EQ(scene["tools"][1]["friction"].get<double>(), 0.1);
   EXPECT_EQ(scene["tools"][1]["kind"], "die");
-  EXPECT_DOUBLE_EQ(scene["numerics"]["max_travel_increment_mm"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(scene["numerics"]["max_travel_increment_mm"].get<double>(),
+                   NumericsSpec{}.max_travel_increment_mm);
   EXPECT_EQ(scene["output"]["history"], true);
   EXPECT_TRUE(contains(j["files"].get<std::vector<std::string>>(), "run.json"));
 }

@@ -1,0 +1,172 @@
+// Issue 2 performance benchmark: example 1 (hemispherical stretching, friction 0.04) to full
+// travel at 25, 50, 100, 200 and 400 elements, single thread. Reports the median wall time, steps,
+// iterations, peak load and the final pole thickness strain, their deviation from the finest mesh,
+// and which mesh is within 1% of the finest against the 50 ms goal.
+//
+//   build-exp/experiments/performance_benchmark [--quick] [--out DIR]
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "common/harness.h"
+#include "common/metrics.h"
+#include "common/table.h"
+#include "output/svg_plot.h"
+
+namespace {
+
+using namespace vsx;
+
+struct Row {
+  int elements = 0;
+  TimedRun run;
+  double peak = kNaN, pole = kNaN, thinnest = kNaN, thinnest_r0 = kNaN;
+};
+
+constexpr double kGoalS = 0.050;
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const StudyArgs args =
+      parse_args(argc, argv, std::string(VS_SOURCE_DIR) + "/experiments/01_performance/results");
+  const std::vector<int> meshes =
+      args.quick ? std::vector<int>{25, 50, 100} : std::vector<int>{25, 50, 100, 200, 400};
+  const std::string path = scene_path(VS_SOURCE_DIR, "ex1_hemispherical_stretching");
+  const std::string machine = machine_description();
+  const std::string load = load_average();
+  std::cout << "Performance benchmark (issue 2): ex1, friction 0.04, full travel, single thread\n"
+            << "machine: " << machine << "\n";
+
+  std::vector<Row> rows;
+  for (int n : meshes) {
+    const Overrides ov{{"tool.punch.friction", "0.04"}, {"blank.elements", std::to_string(n)}};
+    const vs::Scene scene = make_scene(path, ov);
+    const int repeats = args.quick ? 1 : (n >= 200 ? 3 : 5);
+    Row r;
+    r.elements = n;
+    r.run = run_timed(scene, repeats, std::numeric_limits<double>::infinity());
+    r.peak = peak_load(r.run.result).force_N;
+    const vs::Profile& fin = r.run.result.profiles.back();
+    r.pole = pole_thickness_strain(fin);
+    r.thinnest = *std::min_element(fin.eps_thickness.begin(), fin.eps_thickness.end());
+    r.thinnest_r0 = thinnest_r0(fin);
+    std::cout << fmt::format("  {:4d} elements: {:8.1f} ms, {}\n", n, 1e3 * r.run.wall_s,
+                             r.run.result.message);
+    rows.push_back(std::move(r));
+  }
+
+  const Row& fine = rows.back();
+  Table t;
+  t.header = {"elements",
+              "wall_ms",
+              "cpu_ms",
+              "solver_ms",
+              "linear_solve_ms",
+              "steps",
+              "iterations",
+              "iter_per_step",
+              "peak_load_N",
+              "pole_eps_t",
+              "min_eps_t",
+              "thinnest_r0_mm",
+              "dev_peak_vs_finest",
+              "dev_pole_vs_finest",
+              "completed"};
+  int chosen = -1;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    const vs::RunResult& res = r.run.result;
+    const double dp = rel(r.peak, fine.peak), de = rel(r.pole, fine.pole);
+    if (chosen < 0 && i + 1 < rows.size() && dp <= 0.01 && de <= 0.01) chosen = static_cast<int>(i);
+    const int steps = static_cast<int>(res.steps.size());
+    t.add({std::to_string(r.elements), ms(r.run.wall_s), ms(r.run.cpu_s), ms(res.timings.total_s),
+           ms(res.timings.linear_solve_s), std::to_string(steps),
+           std::to_string(res.total_iterations),
+           fmt::format("{:.1f}", 1.0 * res.total_iterations / steps), fmt::format("{:.1f}", r.peak),
+           fmt::format("{:.5f}", r.pole), fmt::format("{:.5f}", r.thinnest),
+           fmt::format("{:.3f}", r.thinnest_r0), pct(dp), pct(de), res.completed() ? "yes" : "no"});
+  }
+  std::cout << "\n" << t.text();
+
+  std::string md = fmt::format(
+      "Scene `data/scenes/ex1_hemispherical_stretching.toml --set tool.punch.friction=0.04`, full "
+      "travel {} mm, history off, in-process `vs::simulate`, one thread, wall time = median of "
+      "{} repeats; `cpu_ms` is the thread CPU time, which is what the wall time would be on an "
+      "idle core. Machine: {}; load average {} at the start (other processes share the cores).\n\n",
+      vsx::g4(fine.run.result.steps.back().punch_travel_mm), args.quick ? "1" : "3-5", machine,
+      load);
+  md += t.markdown() + "\n";
+  if (rows.size() >= 3) {
+    const std::size_t k = rows.size();
+    const Richardson rp = richardson(rows[k - 3].peak, rows[k - 2].peak, rows[k - 1].peak);
+    const Richardson re = richardson(rows[k - 3].pole, rows[k - 2].pole, rows[k - 1].pole);
+    md += fmt::format(
+        "Observed convergence order from the three finest meshes: peak load p = {:.2f}, pole "
+        "thickness strain p = {:.2f}; estimated error of the finest mesh: peak load {}, pole "
+        "strain {}.\n\n",
+        rp.order, re.order, pct(rp.error_est / std::abs(rp.value)),
+        pct(re.error_est / std::abs(re.value)));
+  }
+  if (rows.size() >= 2) {
+    const Row& next = rows[rows.size() - 2];
+    const double jump = rel(next.peak, fine.peak);
+    if (jump > 0.02 || rel(next.pole, fine.pole) > 0.1) {
+      md += fmt::format(
+          "**Warning:** the finest mesh ({} elements) differs from the next ({}) by {} in peak "
+          "load and {} in pole thickness strain, more than the coarser meshes differ among "
+          "themselves: the finest result is suspect, so the deviations above do not measure "
+          "discretisation error (see the problems in the report).\n\n",
+          fine.elements, next.elements, pct(jump), pct(rel(next.pole, fine.pole)));
+    }
+  }
+  if (chosen >= 0) {
+    const Row& c = rows[static_cast<std::size_t>(chosen)];
+    md += fmt::format(
+        "**Goal check:** the coarsest mesh within 1% of the finest ({} elements) in both peak load "
+        "and pole thickness strain is **{} elements**, which runs to full travel in **{} ms** "
+        "against the 50 ms goal ({}: {:.1f}x the goal; thread CPU time {} ms).\n",
+        fine.elements, c.elements, ms(c.run.wall_s),
+        c.run.wall_s <= kGoalS ? "goal met" : "goal missed", c.run.wall_s / kGoalS,
+        ms(c.run.cpu_s));
+  } else {
+    md += "**Goal check:** no coarser mesh is within 1% of the finest in both quantities.\n";
+  }
+  md += "\n![benchmark](01_performance/results/performance.svg)\n";
+  std::cout << "\n" << md;
+
+  std::filesystem::create_directories(args.out_dir);
+  write_text(args.out_dir + "/performance.csv", t.csv());
+  write_text(args.out_dir + "/summary.md", md);
+
+  vs::SvgFigure fig;
+  fig.title = "ex1 benchmark: wall time and deviation from the finest mesh";
+  fig.x_label = "log10(elements)";
+  fig.y_label = "log10(value)";
+  vs::PlotSeries time{"wall time [s]", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+  vs::PlotSeries dpk{"|peak load deviation|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+  vs::PlotSeries dpo{"|pole eps_t deviation|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+  vs::PlotSeries goal{"50 ms goal", {}, {}, vs::SeriesStyle::kLine};
+  goal.dashed = true;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double x = std::log10(rows[i].elements);
+    time.x.push_back(x);
+    time.y.push_back(std::log10(rows[i].run.wall_s));
+    goal.x.push_back(x);
+    goal.y.push_back(std::log10(kGoalS));
+    if (i + 1 < rows.size()) {
+      dpk.x.push_back(x);
+      dpk.y.push_back(std::log10(rel(rows[i].peak, fine.peak)));
+      dpo.x.push_back(x);
+      dpo.y.push_back(std::log10(rel(rows[i].pole, fine.pole)));
+    }
+  }
+  fig.series = {time, dpk, dpo, goal};
+  vs::write_svg(fig, args.out_dir + "/performance.svg");
+  std::cout << "wrote " << args.out_dir << "/{performance.csv,summary.md,performance.svg}\n";
+  return 0;
+}

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Regenerates every experiment and experiments/REPORT.md from the current code.
+#   experiments/run_all.sh           full studies (about 10-20 min on 2 cores), results in
+#                                    experiments/<study>/results/ and experiments/REPORT.md
+#   experiments/run_all.sh --quick   reduced studies (under a minute), results and REPORT.md in
+#                                    build-exp/experiments-quick/ (the committed results stay)
+# Builds what it needs in build-exp/ (override with BUILD_DIR=...). Runs are single-threaded and
+# sequential so that wall times are comparable.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(dirname "$here")"
+build="${BUILD_DIR:-$repo/build-exp}"
+quick=()
+root="$here"
+if [[ "${1:-}" == "--quick" ]]; then
+  quick=(--quick)
+  root="$build/experiments-quick"
+fi
+export OMP_NUM_THREADS=1
+cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j2 --target performance_benchmark work_precision stability make_report
+bin="$build/experiments"
+"$bin/performance_benchmark" "${quick[@]}" --out "$root/01_performance/results"
+"$bin/work_precision" "${quick[@]}" --out "$root/02_work_precision/results"
+"$bin/stability" "${quick[@]}" --out "$root/03_stability/results"
+"$bin/make_report" "${quick[@]}" --root "$root"

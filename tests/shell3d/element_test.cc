@@ -1,0 +1,115 @@
+// The 9-node shell element (forward/shell3d/shell9.h): zero-energy modes per rule, the
+// constant-viscosity mode as the nu = 1/2 elastic shell, consistent tangent of the viscous mode.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "benchmark_setups.h"
+#include "shell3d/shell9.h"
+
+namespace vs::shell3d {
+namespace {
+
+// Number of (relatively) zero eigenvalues of the free, unconstrained stiffness.
+int zero_modes(const ShellMesh& mesh, Shell9Rule rule) {
+  ShellModel model(mesh);
+  LinearShellProblem p(model, Shell9Material::Elastic(1.0, 0.3), bench::options(rule));
+  Eigen::VectorXd f;
+  p.assembler().assemble(p.kernel(Shell9Stiffness::kSecant),
+                         Eigen::VectorXd::Zero(model.num_dofs()), true, &f);
+  const Eigen::MatrixXd K(p.assembler().matrix());
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
+  int n = 0;
+  for (Eigen::Index i = 0; i < ev.size(); ++i) n += std::abs(ev(i)) < 1e-9 * ev.maxCoeff();
+  return n;
+}
+
+TEST(Shell9ZeroModes, SingleFlatElement) {
+  const ShellMesh one = rectangular_plate(1.0, 1.0, 1, 1, 0.1);
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kSelective), 7);  // 6 rigid + 1 spurious w-mode
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kFull), 6);
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kReduced), 13);  // 7 spurious
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kMitc9), 6);
+}
+
+TEST(Shell9ZeroModes, SingleCurvedElement) {
+  const ShellMesh one = cylinder_patch(1.0, 0.0, 1.0, 0.0, 1.0, 1, 1, 0.05);
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kSelective), 6);
+  EXPECT_EQ(zero_modes(one, Shell9Rule::kMitc9), 6);
+}
+
+TEST(Shell9ZeroModes, AssembledFlatMeshes) {
+  for (int n : {2, 4}) {
+    const ShellMesh mesh = rectangular_plate(1.0, 1.0, n, n, 0.1);
+    EXPECT_EQ(zero_modes(mesh, Shell9Rule::kSelective), 7) << n;  // the global checkerboard
+    EXPECT_EQ(zero_modes(mesh, Shell9Rule::kMitc9), 6) << n;
+  }
+}
+
+Shell9Geometry curved_geometry() {
+  static const ShellMesh mesh = sphere_patch(5.0, 0.3, 0.8, 0.1, 0.7, 1, 1, 0.2);
+  static const ShellModel model(mesh);
+  return model.element_geometry(0);
+}
+
+Eigen::VectorXd test_velocity(int n) {
+  Eigen::VectorXd q(n);
+  for (int i = 0; i < n; ++i) q(i) = std::sin(1.3 * i + 0.2) + 0.1 * std::cos(0.7 * i * i);
+  return q;
+}
+
+TEST(Shell9Element, ConstantViscosityIsTheIncompressibleElasticShell) {
+  const Shell9Geometry g = curved_geometry();
+  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 5);
+  const double mu = 7.0;
+  const ViscousLaw constant = ViscousLaw::Constant(mu);
+  const HillPlaneStressLaw hill(constant);
+  for (auto rule : {Shell9Rule::kSelective, Shell9Rule::kMitc9}) {
+    Shell9Output a, b;
+    const Eigen::VectorXd q = test_velocity(g.ndof());
+    shell9_evaluate(g, rule, thick, Shell9Material::Elastic(3.0 * mu, 0.5), {}, q,
+                    Shell9Stiffness::kSecant, &a);
+    shell9_evaluate(g, rule, thick, Shell9Material::Viscous(hill, mu), {}, q,
+                    Shell9Stiffness::kSecant, &b);
+    EXPECT_LT((a.stiffness - b.stiffness).norm(), 1e-12 * a.stiffness.norm());
+    EXPECT_LT((a.force - a.stiffness * q).norm(), 1e-12 * a.force.norm());
+    // Linear: the potential is half the power.
+    EXPECT_NEAR(a.potential, 0.5 * q.dot(a.force), 1e-12 * std::abs(a.potential));
+  }
+}
+
+TEST(Shell9Element, ViscousTangentAndForceAreDerivatives) {
+  const Shell9Geometry g = curved_geometry();
+  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
+  RateSpec rate;
+  rate.law = RateLaw::kPower;
+  rate.m = 0.1;
+  const ViscousLaw law(rate, 1e-3, 1.6);
+  const HillPlaneStressLaw hill(law);
+  const Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
+  for (auto rule : {Shell9Rule::kSelective, Shell9Rule::kMitc9}) {
+    const int np = shell9_inplane_points(rule) * 3;
+    std::vector<double> sy(static_cast<std::size_t>(np), 200.0), hv(sy.size(), 3.0);
+    const Shell9State st{sy.data(), hv.data()};
+    const Eigen::VectorXd q = 1e-2 * test_velocity(g.ndof());
+    Shell9Output out;
+    shell9_evaluate(g, rule, thick, mat, st, q, Shell9Stiffness::kTangent, &out);
+    const double h = 1e-7;
+    for (int j = 0; j < g.ndof(); j += 7) {
+      Eigen::VectorXd qp = q, qm = q;
+      qp(j) += h;
+      qm(j) -= h;
+      Shell9Output op, om;
+      shell9_evaluate(g, rule, thick, mat, st, qp, Shell9Stiffness::kNone, &op);
+      shell9_evaluate(g, rule, thick, mat, st, qm, Shell9Stiffness::kNone, &om);
+      const Eigen::VectorXd fd = (op.force - om.force) / (2.0 * h);
+      EXPECT_LT((fd - out.stiffness.col(j)).norm(), 1e-5 * out.stiffness.norm()) << j;
+      EXPECT_NEAR((op.potential - om.potential) / (2.0 * h), out.force(j), 1e-6 * out.force.norm());
+    }
+    EXPECT_LT((out.stiffness - out.stiffness.transpose()).norm(), 1e-12 * out.stiffness.norm());
+  }
+}
+
+}  // namespace
+}  // namespace vs::shell3d

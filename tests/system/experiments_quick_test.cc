@@ -1,0 +1,120 @@
+// Quick variants of the experiments (experiments/README.md): each study in a reduced form, with
+// the invariants the full studies rely on. Runs in seconds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "../../experiments/common/harness.h"
+#include "../../experiments/common/metrics.h"
+#include "../../experiments/common/stability_cases.h"
+#include "../../experiments/common/work_precision.h"
+
+namespace {
+
+using namespace vsx;
+
+const std::string kEx1 = scene_path(VS_SOURCE_DIR, "ex1_hemispherical_stretching");
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+vs::RunResult run_ex1(const Overrides& ov) { return run_once(make_scene(kEx1, ov), kInf).result; }
+
+// 01_performance in small: ex1 to 10 mm at 25, 50, 100 and 200 elements; the peak load moves
+// monotonically towards the finest mesh and every run is timed.
+TEST(ExperimentsQuick, PerformanceMeshRefinementConverges) {
+  // Meshes up to element length ~ thickness (70 elements for ex1); finer shell meshes are outside
+  // the thin-shell model (the solver warns). The load at a given travel carries ~0.5% of mesh
+  // noise from the discrete contact front (measured 24 805 / 25 427 / 25 504 / 25 356 N at
+  // 20 mm for 12 / 24 / 48 / 70 elements), so the check is agreement, not monotone order.
+  std::vector<double> peak;
+  for (int n : {12, 24, 48, 70}) {
+    const TimedRun t = run_once(make_scene(kEx1, {{"blank.elements", std::to_string(n)},
+                                                  {"process.punch_travel_mm", "20"},
+                                                  {"process.output_travels_mm", "[10.0, 20.0]"}}),
+                                kInf);
+    ASSERT_TRUE(t.result.completed()) << t.result.message;
+    EXPECT_GT(t.wall_s, 0.0);
+    peak.push_back(peak_load(t.result).force_N);
+  }
+  EXPECT_LT(rel(peak[0], peak[3]), 0.03);
+  EXPECT_LT(rel(peak[1], peak[3]), 0.01);
+  EXPECT_LT(rel(peak[2], peak[3]), 0.01);
+}
+
+// 02_work_precision in small: refining elements and the step caps together reduces the error of
+// the peak load and of the load curve against the finest level.
+TEST(ExperimentsQuick, WorkPrecisionErrorDecreasesWithRefinement) {
+  const Overrides base{{"process.punch_travel_mm", "8"},
+                       {"process.output_travels_mm", "[4.0, 8.0]"}};
+  std::vector<Outcome> all;
+  for (int k = 0; k < 4; ++k) {
+    const double f = std::ldexp(1.0, k);
+    Outcome o;
+    o.setting = {"refined", k == 3 ? "L2" : fmt::format("c{}", k), base};
+    o.setting.ov.push_back({"blank.elements", std::to_string(static_cast<int>(12 * f))});
+    o.setting.ov.push_back({"numerics.max_travel_increment_mm", fmt::format("{}", 1.0 / f)});
+    o.setting.ov.push_back({"numerics.max_strain_increment", fmt::format("{}", 0.04 / f)});
+    o.run = run_once(make_scene(kEx1, o.setting.ov), kInf);
+    ASSERT_TRUE(o.run.result.completed()) << o.run.result.message;
+    measure(&o);
+    all.push_back(std::move(o));
+  }
+  // Reference: the three finest levels.
+  std::vector<Outcome> levels(all.begin() + 1, all.end());
+  for (Outcome& o : levels) o.setting.family = "refined";
+  const Reference ref = make_reference(&levels, {4.0, 8.0}, 8.0);
+  ASSERT_TRUE(ref.ok) << ref.note;
+  const Errors e0 = errors_against(all[0], ref), e1 = errors_against(all[1], ref);
+  EXPECT_LT(e1.peak, e0.peak);
+  EXPECT_LT(e1.curve, e0.curve);
+  EXPECT_GT(e0.strain_abs, 0.0);
+  EXPECT_LT(e0.combined, 0.5);
+}
+
+// 03_stability in small: every case converges with sane physics or stops with a message; the
+// volume is conserved; thickness stays positive.
+TEST(ExperimentsQuick, StabilityCasesConvergeOrStopCleanly) {
+  for (const StabilityCase& c : stability_cases(VS_SOURCE_DIR, true)) {
+    const StabilityRow r = evaluate_stability(VS_SOURCE_DIR, c, 30.0);
+    SCOPED_TRACE(c.name + ": " + r.run.result.message);
+    EXPECT_NE(r.verdict, "GARBAGE");
+    EXPECT_NE(r.verdict, "aborted");
+    if (r.verdict == "stopped") {
+      EXPECT_FALSE(r.run.result.message.empty());
+    }
+    if (r.steps > 0) {
+      EXPECT_GT(r.min_thickness_ratio, 0.0);
+    }
+  }
+}
+
+// Thickness comes from the constant element volume, so the sheet volume is exact to round-off.
+TEST(ExperimentsQuick, VolumeConservedToRoundOff) {
+  for (const char* f : {"0.04", "sticking"}) {
+    const StabilityRow r = evaluate_stability(VS_SOURCE_DIR,
+                                              {"volume",
+                                               f,
+                                               "ex1_hemispherical_stretching",
+                                               {{"tool.punch.friction", f},
+                                                {"process.punch_travel_mm", "3"},
+                                                {"process.output_travels_mm", "[3.0]"}}},
+                                              30.0);
+    EXPECT_LE(r.volume_drift, 1e-9) << "friction " << f;
+  }
+}
+
+// Unit scaling: all lengths x 10 at the same punch speed gives the same strains and forces x 100.
+TEST(ExperimentsQuick, ScaledGeometryGivesScaledAnswers) {
+  const Overrides travel{{"process.punch_travel_mm", "5"}, {"process.output_travels_mm", "[5.0]"}};
+  const Overrides scaled = ex1_scaled(make_scene(kEx1, travel), 10.0);
+  const vs::RunResult a = run_ex1(travel), b = run_ex1(scaled);
+  ASSERT_TRUE(a.completed()) << a.message;
+  ASSERT_TRUE(b.completed()) << b.message;
+  const ScaleMismatch m = scale_mismatch(a, b, 10.0);
+  EXPECT_LT(m.force_rel_l2, 1e-3);
+  EXPECT_LT(m.eps_t_max_abs, 1e-4);
+}
+
+}  // namespace
