@@ -42,8 +42,8 @@ ClosestPoint closest_on(const ProfilePrimitive& p, const Eigen::Vector2d& x) {
   const double along = gap.dot(c.normal);
   const double dist = gap.norm();
   // Inside the primitive's range the gap is along the normal; past an end, keep the side sign.
-  c.distance = (dist - std::abs(along) < 1e-12 * (1.0 + dist)) ? along
-                                                                : (along >= 0.0 ? dist : -dist);
+  c.distance =
+      (dist - std::abs(along) < 1e-12 * (1.0 + dist)) ? along : (along >= 0.0 ? dist : -dist);
   return c;
 }
 

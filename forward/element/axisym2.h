@@ -44,16 +44,16 @@ struct Axisym2Section {
   // Hardening seen by the step at each point, theta H dt [MPa s] (see ViscousLaw::evaluate);
   // null = none.
   const std::vector<double>* hardening_viscosity = nullptr;
-  double shear_viscosity = 1.0;                  // penalty viscosity for transverse shear
+  double shear_viscosity = 1.0;  // penalty viscosity for transverse shear
 };
 
 enum class StiffnessKind { kSecant, kTangent, kNone };
 
 struct Axisym2Output {
-  Vec6 force = Vec6::Zero();             // internal nodal forces (full 360 degrees) [N]
-  Mat6 stiffness = Mat6::Zero();         // secant or tangent [N s/mm]
-  double potential = 0.0;  // integral of phi over the volume [N mm/s]; only with kNone
-  Vec5 strain_rate = Vec5::Zero();       // generalised strain rates
+  Vec6 force = Vec6::Zero();        // internal nodal forces (full 360 degrees) [N]
+  Mat6 stiffness = Mat6::Zero();    // secant or tangent [N s/mm]
+  double potential = 0.0;           // integral of phi over the volume [N mm/s]; only with kNone
+  Vec5 strain_rate = Vec5::Zero();  // generalised strain rates
   Vec5 stress_resultant = Vec5::Zero();  // N_s, N_t [N/mm]; M_s, M_t [N]; Q [N/mm]
   std::vector<double> point_rate;        // effective strain rate at each thickness point
 };

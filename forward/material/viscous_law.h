@@ -32,10 +32,10 @@ class ViscousLaw {
   static ViscousLaw Constant(double mu, double r_value = 1.0);
 
   struct Point {
-    double rate = 0.0;          // effective strain rate e [1/s]
-    double mu = 0.0;            // secant viscosity [MPa s]
-    double tangent_coef = 0.0;  // D_tan = mu A + tangent_coef (A d)(A d)^T
-    double potential = 0.0;     // phi(e) [MPa/s]: power density potential
+    double rate = 0.0;                                 // effective strain rate e [1/s]
+    double mu = 0.0;                                   // secant viscosity [MPa s]
+    double tangent_coef = 0.0;                         // D_tan = mu A + tangent_coef (A d)(A d)^T
+    double potential = 0.0;                            // phi(e) [MPa/s]: power density potential
     Eigen::Vector2d stress = Eigen::Vector2d::Zero();  // s = mu A d [MPa]
   };
   // sigma_y: flow stress at the start of the step; hardening_viscosity = theta H dt [MPa s]: the

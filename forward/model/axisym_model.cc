@@ -43,8 +43,7 @@ AxisymModel::AxisymModel(const Scene& scene)
     throw InputError(scene.source + ": the axisymmetric solver only runs axisymmetric scenes");
   }
   nominal_rate_ = scene.process.punch_speed_mm_per_s / scene.blank.radius_mm;
-  friction_velocity_ =
-      scene.numerics.friction_regularisation * scene.process.punch_speed_mm_per_s;
+  friction_velocity_ = scene.numerics.friction_regularisation * scene.process.punch_speed_mm_per_s;
   r0_ = graded_radii(scene.blank.radius_mm, scene.blank.elements, scene.blank.grading);
   const double h0 = scene.blank.thickness_mm;
   for (int e = 0; e + 1 < num_nodes(); ++e) {
@@ -132,7 +131,8 @@ Eigen::Matrix3d AxisymModel::frame(const AxisymState& s, int node) const {
 Eigen::VectorXd AxisymModel::to_local(const AxisymState& s, const Eigen::VectorXd& v) const {
   Eigen::VectorXd out = v;
   for (int i = 0; i < num_nodes(); ++i) {
-    if (s.contact[i].tool >= 0) out.segment<3>(3 * i) = frame(s, i).transpose() * v.segment<3>(3 * i);
+    if (s.contact[i].tool >= 0)
+      out.segment<3>(3 * i) = frame(s, i).transpose() * v.segment<3>(3 * i);
   }
   return out;
 }
@@ -218,8 +218,8 @@ void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, 
   *potential = limit * kTwoOverPi * (vt_rel * at - 0.5 * v0 * std::log1p(a * a));
 }
 
-void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local,
-                           StiffnessKind kind, AxisymSystem* out, double tangent_weight) const {
+void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
+                           AxisymSystem* out, double tangent_weight) const {
   const int nn = num_nodes();
   const Eigen::VectorXd v = to_global(s, v_local);
   const bool want_k = kind != StiffnessKind::kNone;
@@ -272,7 +272,8 @@ void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local,
     r(3 * i) += f;
     out->potential += phi;
     if (want_k) {
-      out->K.diag(i)(0, 0) += kind == StiffnessKind::kTangent ? ks + tangent_weight * (kt - ks) : ks;
+      out->K.diag(i)(0, 0) +=
+          kind == StiffnessKind::kTangent ? ks + tangent_weight * (kt - ks) : ks;
     }
   }
   std::vector<char> mask;

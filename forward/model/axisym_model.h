@@ -23,19 +23,19 @@
 namespace vs {
 
 struct NodeContact {
-  int tool = -1;                 // index into tools, -1 = free
+  int tool = -1;                                      // index into tools, -1 = free
   Eigen::Vector2d normal = Eigen::Vector2d::UnitY();  // from the tool into the sheet
-  double normal_force_N = 0.0;   // lagged normal reaction (compressive > 0), full 360 degrees
-  double holder_force_N = 0.0;   // blank-holder share pressing this node against the die face
-  bool on_die_face = false;      // touching the flat face of the die (the flange)
+  double normal_force_N = 0.0;  // lagged normal reaction (compressive > 0), full 360 degrees
+  double holder_force_N = 0.0;  // blank-holder share pressing this node against the die face
+  bool on_die_face = false;     // touching the flat face of the die (the flange)
 };
 
 // Everything that changes from step to step.
 struct AxisymState {
   double time_s = 0.0;
-  std::vector<Eigen::Vector2d> x;  // node coordinates (r, z) [mm]
-  std::vector<double> thickness;   // per element [mm]
-  std::vector<double> eps_bar;     // per element and thickness point (row-major)
+  std::vector<Eigen::Vector2d> x;            // node coordinates (r, z) [mm]
+  std::vector<double> thickness;             // per element [mm]
+  std::vector<double> eps_bar;               // per element and thickness point (row-major)
   std::vector<Eigen::Vector2d> tool_offset;  // per tool
   std::vector<NodeContact> contact;          // per node
   Eigen::VectorXd v;                         // last converged velocity (global frame)
@@ -43,11 +43,11 @@ struct AxisymState {
 
 // One evaluation of the discrete system in the nodal (friction) frames.
 struct AxisymSystem {
-  BlockTridiag K;             // stiffness with prescribed dofs replaced by identity
-  Eigen::VectorXd residual;   // at free dofs; zero at prescribed dofs
-  double potential = 0.0;     // flow potential (line-search merit); only with kNone
-  Eigen::VectorXd element_force;  // f_el in the global frame (reactions = f_el - f_ext)
-  Eigen::VectorXd external_force; // f_ext in the global frame
+  BlockTridiag K;                  // stiffness with prescribed dofs replaced by identity
+  Eigen::VectorXd residual;        // at free dofs; zero at prescribed dofs
+  double potential = 0.0;          // flow potential (line-search merit); only with kNone
+  Eigen::VectorXd element_force;   // f_el in the global frame (reactions = f_el - f_ext)
+  Eigen::VectorXd external_force;  // f_ext in the global frame
 };
 
 class AxisymModel {
@@ -121,15 +121,15 @@ class AxisymModel {
   ViscousLaw law_;
   std::vector<RigidTool> tools_;
   std::vector<double> r0_, l0_, volume_;
-  double nominal_rate_ = 1.0;    // punch speed / blank radius [1/s]
+  double nominal_rate_ = 1.0;        // punch speed / blank radius [1/s]
   double friction_velocity_ = 1e-4;  // arctan regularisation velocity [mm/s]
   int punch_ = -1, die_ = -1;
   double holder_force_ = 0.0, holder_friction_ = 0.0;
   bool has_holder_ = false;
   // Frozen per step.
-  std::vector<std::vector<double>> sigma_y_;  // per element, per point
+  std::vector<std::vector<double>> sigma_y_;              // per element, per point
   std::vector<std::vector<double>> hardening_viscosity_;  // per element, per point
-  std::vector<double> shear_viscosity_;       // per element
+  std::vector<double> shear_viscosity_;                   // per element
 };
 
 }  // namespace vs

@@ -6,8 +6,8 @@ namespace vs {
 
 double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
                                    Eigen::VectorXd* residual) {
-  model_.evaluate(*state_, x, theta > 0.0 ? StiffnessKind::kTangent : StiffnessKind::kSecant,
-                  &sys_, theta);
+  model_.evaluate(*state_, x, theta > 0.0 ? StiffnessKind::kTangent : StiffnessKind::kSecant, &sys_,
+                  theta);
   std::swap(*K, sys_.K);
   *residual = sys_.residual;
   return sys_.element_force.norm();

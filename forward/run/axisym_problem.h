@@ -12,8 +12,7 @@ namespace vs {
 
 class AxisymStepProblem : public NonlinearProblem {
  public:
-  AxisymStepProblem(const AxisymModel& model, AxisymState* state)
-      : model_(model), state_(state) {}
+  AxisymStepProblem(const AxisymModel& model, AxisymState* state) : model_(model), state_(state) {}
 
   double evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
                   Eigen::VectorXd* residual) override;

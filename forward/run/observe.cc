@@ -30,7 +30,8 @@ Profile make_profile(const AxisymModel& model, const AxisymState& s, double punc
       const double c = (g.rb - g.ra) / l, sn = (g.zb - g.za) / l;
       p.meridional_force_N_per_mm.push_back(S(0));
       p.circumferential_force_N_per_mm.push_back(S(1));
-      p.vertical_force_N.push_back(-2.0 * std::numbers::pi * g.mid_radius() * (S(0) * sn + S(4) * c));
+      p.vertical_force_N.push_back(-2.0 * std::numbers::pi * g.mid_radius() *
+                                   (S(0) * sn + S(4) * c));
     }
   }
   for (const auto& x : s.x) {

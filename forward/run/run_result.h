@@ -12,37 +12,37 @@ struct StepRecord {
   int step = 0;
   double time_s = 0.0;
   double punch_travel_mm = 0.0;
-  double punch_force_N = 0.0;        // full 360-degree force the punch exerts on the sheet (+z)
-  int iterations = 0;                // nonlinear iterations of the accepted solve
-  double residual_norm = 0.0;        // final relative residual
-  double update_norm = 0.0;          // final relative velocity change (paper eq. 12)
-  int contact_nodes = 0;             // nodes in contact with any tool
-  int cutbacks = 0;                  // step halvings before this step converged
-  double min_thickness_mm = 0.0;     // thinnest element
-  double thinnest_r0_mm = 0.0;       // its initial radius (element midpoint)
-  double thinnest_r_mm = 0.0;        // its current radius
-  double volume_mm3 = 0.0;           // sheet volume (constant up to round-off)
-  double rim_draw_in_mm = 0.0;       // initial minus current rim radius
+  double punch_force_N = 0.0;     // full 360-degree force the punch exerts on the sheet (+z)
+  int iterations = 0;             // nonlinear iterations of the accepted solve
+  double residual_norm = 0.0;     // final relative residual
+  double update_norm = 0.0;       // final relative velocity change (paper eq. 12)
+  int contact_nodes = 0;          // nodes in contact with any tool
+  int cutbacks = 0;               // step halvings before this step converged
+  double min_thickness_mm = 0.0;  // thinnest element
+  double thinnest_r0_mm = 0.0;    // its initial radius (element midpoint)
+  double thinnest_r_mm = 0.0;     // its current radius
+  double volume_mm3 = 0.0;        // sheet volume (constant up to round-off)
+  double rim_draw_in_mm = 0.0;    // initial minus current rim radius
 };
 
 // Element-midpoint fields along the meridian at one instant.
 struct Profile {
   double punch_travel_mm = 0.0;
-  std::vector<double> r0_mm;             // initial radius of the element midpoint
-  std::vector<double> r_mm;              // current radius
-  std::vector<double> z_mm;              // current height
+  std::vector<double> r0_mm;  // initial radius of the element midpoint
+  std::vector<double> r_mm;   // current radius
+  std::vector<double> z_mm;   // current height
   std::vector<double> thickness_mm;
-  std::vector<double> eps_meridional;    // ln(l / l0)
+  std::vector<double> eps_meridional;       // ln(l / l0)
   std::vector<double> eps_circumferential;  // ln(r / r0)
-  std::vector<double> eps_thickness;     // ln(h / h0)
-  std::vector<double> eps_effective;     // accumulated effective plastic strain (mid-surface)
-  std::vector<int> contact;              // 0 free, 1 touching a tool at either node
+  std::vector<double> eps_thickness;        // ln(h / h0)
+  std::vector<double> eps_effective;        // accumulated effective plastic strain (mid-surface)
+  std::vector<int> contact;                 // 0 free, 1 touching a tool at either node
   std::vector<double> meridional_force_N_per_mm;       // N_s = integral of sigma_s over h
   std::vector<double> circumferential_force_N_per_mm;  // N_t
   // Axial force carried through the circle at the element midpoint, -2 pi r (N_s t_z + Q n_z):
   // in the unsupported region it equals the punch force (exact equilibrium check).
   std::vector<double> vertical_force_N;
-  std::vector<double> node_r_mm;         // deformed shape: nodes of the meridian
+  std::vector<double> node_r_mm;  // deformed shape: nodes of the meridian
   std::vector<double> node_z_mm;
 };
 

@@ -5,14 +5,14 @@
 // it has with Termination::kFailed.
 #include "run/simulate.h"
 
-#include <chrono>
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
-
-#include <fmt/format.h>
 
 #include "core/error.h"
 #include "model/axisym_model.h"
@@ -88,8 +88,8 @@ class Driver {
   AxisymModel model_;
   NonlinearOptions nl_;
   std::vector<double> targets_;
-  double contact_tol_ = 0.0;  // gap below which a node touches a tool
-  double attach_tol_ = 0.0;   // search tolerance next to a touching neighbour
+  double contact_tol_ = 0.0;    // gap below which a node touches a tool
+  double attach_tol_ = 0.0;     // search tolerance next to a touching neighbour
   std::vector<char> released_;  // nodes released by the last solve (no immediate re-contact)
   RunTimings timings_;
 };
@@ -135,8 +135,9 @@ void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released
       // outputs stay smooth functions of the parameters.
       const int ti = static_cast<int>(t);
       const bool next = i + 1 < model_.num_nodes() && s.contact[i + 1].tool == ti;
-      const bool prev = (i == 0 && model_.initial_radius(0) == 0.0) ? next
-                                                                     : (i > 0 && s.contact[i - 1].tool == ti);
+      const bool prev = (i == 0 && model_.initial_radius(0) == 0.0)
+                            ? next
+                            : (i > 0 && s.contact[i - 1].tool == ti);
       const double tol = (next && prev) ? attach_tol_ : contact_tol_;
       if (g <= tol && g < best_gap) {
         best_gap = g;
@@ -318,7 +319,8 @@ RunResult Driver::run() {
   const auto t_start = Clock::now();
   RunResult result;
   double shortest = std::numeric_limits<double>::infinity();
-  for (int e = 0; e < model_.num_elements(); ++e) shortest = std::min(shortest, model_.initial_length(e));
+  for (int e = 0; e < model_.num_elements(); ++e)
+    shortest = std::min(shortest, model_.initial_length(e));
   if (shortest < scene_.blank.thickness_mm) {
     // A shell discretisation finer than the thickness resolves nothing real and makes the nodal
     // contact reactions oscillate (measured: ex1 thinning stops converging below l = h).
@@ -365,7 +367,8 @@ RunResult Driver::run() {
       result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
       ++next_output;
     }
-    if (scene_.output.history) result.history.push_back(make_profile(model_, current.state, T, current.resultants));
+    if (scene_.output.history)
+      result.history.push_back(make_profile(model_, current.state, T, current.resultants));
     if (T >= total * (1.0 - 1e-12)) break;
 
     // Next configuration, with cut-back on failure.
@@ -380,9 +383,8 @@ RunResult Driver::run() {
       if (ok) break;
       if (cutbacks_since_success >= scene_.numerics.max_cutbacks) {
         result.termination = Termination::kFailed;
-        result.message = fmt::format(
-            "stopped at punch travel {:.4f} mm after {} cut-backs: {}", T, cutbacks_since_success,
-            why);
+        result.message = fmt::format("stopped at punch travel {:.4f} mm after {} cut-backs: {}", T,
+                                     cutbacks_since_success, why);
         result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
         timings_.total_s = seconds_since(t_start);
         result.timings = timings_;

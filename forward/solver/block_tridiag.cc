@@ -20,8 +20,8 @@ void BlockTridiag::fix_dof(int i, int a) {
   diag_[i].row(a).setZero();
   diag_[i].col(a).setZero();
   diag_[i](a, a) = 1.0;
-  if (i > 0) lower_[i - 1].row(a).setZero();          // K(i, i-1) row a
-  if (i + 1 < blocks()) lower_[i].col(a).setZero();   // K(i+1, i) column a
+  if (i > 0) lower_[i - 1].row(a).setZero();         // K(i, i-1) row a
+  if (i + 1 < blocks()) lower_[i].col(a).setZero();  // K(i+1, i) column a
 }
 
 Eigen::VectorXd BlockTridiag::multiply(const Eigen::VectorXd& x) const {

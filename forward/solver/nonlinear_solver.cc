@@ -1,9 +1,9 @@
 #include "solver/nonlinear_solver.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
-
-#include <fmt/format.h>
 
 namespace vs {
 

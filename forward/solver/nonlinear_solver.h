@@ -31,11 +31,11 @@ class NonlinearProblem {
 
 struct NonlinearOptions {
   SolverKind kind = SolverKind::kNewton;
-  double tolerance = 1e-6;         // on ||dx||/||x|| (paper eq. 12) and ||r||/||f_internal||
+  double tolerance = 1e-6;  // on ||dx||/||x|| (paper eq. 12) and ||r||/||f_internal||
   int max_iterations = 100;
-  int picard_before_newton = 1;    // direct iterations that start each Newton solve
-  double initial_theta = 0.5;      // first tangent weight after them
-  bool verbose = false;            // iteration table on stderr
+  int picard_before_newton = 1;  // direct iterations that start each Newton solve
+  double initial_theta = 0.5;    // first tangent weight after them
+  bool verbose = false;          // iteration table on stderr
 };
 
 struct NonlinearSummary {

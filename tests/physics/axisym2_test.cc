@@ -146,7 +146,8 @@ TEST(Axisym2Elastic, FreeChainHasExactlyOneZeroEnergyMode) {
     EXPECT_EQ(zeros, 1);
     // ...and it is the axial translation.
     const Eigen::VectorXd m = es.eigenvectors().col(0);
-    for (int i = 0; i < c.nodes(); ++i) EXPECT_NEAR(std::abs(m(3 * i + 1)), 1.0 / std::sqrt(c.nodes()), 1e-6);
+    for (int i = 0; i < c.nodes(); ++i)
+      EXPECT_NEAR(std::abs(m(3 * i + 1)), 1.0 / std::sqrt(c.nodes()), 1e-6);
   }
 }
 

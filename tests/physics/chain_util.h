@@ -17,7 +17,7 @@ struct Chain {
   double thickness = 1.0;
   double G = 1.0;
   int thickness_points = 5;
-  Eigen::VectorXd load;            // nodal loads (u, w, beta) per node, full 360 degrees
+  Eigen::VectorXd load;                    // nodal loads (u, w, beta) per node, full 360 degrees
   std::vector<std::pair<int, int>> fixed;  // (node, dof)
 
   int nodes() const { return static_cast<int>(x.size()); }

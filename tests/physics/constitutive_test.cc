@@ -11,8 +11,8 @@
 namespace vs {
 namespace {
 
-constexpr double kSy = 250.0;      // flow stress [MPa]
-constexpr double kCut = 1e-12;     // negligible cut-off: rate-independent limit
+constexpr double kSy = 250.0;   // flow stress [MPa]
+constexpr double kCut = 1e-12;  // negligible cut-off: rate-independent limit
 
 ViscousLaw RateIndependent(double R) { return ViscousLaw(RateSpec{}, kCut, R); }
 
@@ -93,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(RValues, ClosedForms, ::testing::Values(0.2, 0.41, 1.0,
 
 TEST(Constitutive, RIsOneIsVonMises) {
   const ViscousLaw law = RateIndependent(1.0);
-  // von Mises plane stress: e^2 = 4/3 (d1^2 + d2^2 + d1 d2), sigma = 2 sigma_y/(3 e) (2d1 + d2, ..).
+  // von Mises plane stress: e^2 = 4/3 (d1^2 + d2^2 + d1 d2), sigma = 2 sigma_y/(3 e) (2d1 + d2,
+  // ..).
   const Eigen::Vector2d d(0.4, 0.1);
   const double e = std::sqrt(4.0 / 3.0 * (d(0) * d(0) + d(1) * d(1) + d(0) * d(1)));
   EXPECT_NEAR(law.effective_rate(d), e, 1e-14);

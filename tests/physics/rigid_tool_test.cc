@@ -65,7 +65,7 @@ TEST(RigidTool, DieShoulderAndFace) {
 TEST(RigidTool, FlatPunchNoseRadius) {
   std::vector<RigidTool> tools = make_tools(OneTool(ToolKind::kFlatPunch, 30.0, 5.0));
   const RigidTool& p = tools[0];
-  EXPECT_NEAR(p.gap({10.0, 0.0}, 1.0), 0.0, 1e-12);   // flat face touches the sheet
+  EXPECT_NEAR(p.gap({10.0, 0.0}, 1.0), 0.0, 1e-12);  // flat face touches the sheet
   EXPECT_NEAR(p.closest({10.0, 2.0}).normal.y(), 1.0, 1e-12);
   // Around the nose: centre (25, -0.5 - 5).
   const Eigen::Vector2d x(29.0, 1.0), c(25.0, -5.5);

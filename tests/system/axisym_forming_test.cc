@@ -37,8 +37,8 @@ TEST(AxisymForming, PunchForceEqualsForceThroughEveryFreeCircle) {
     int checked = 0;
     for (std::size_t e = 0; e < p.contact.size(); ++e) {
       if (p.contact[e]) continue;  // unsupported region only
-      EXPECT_NEAR(p.vertical_force_N[e] / F, 1.0, 0.01) << "travel " << p.punch_travel_mm
-                                                       << " element " << e;
+      EXPECT_NEAR(p.vertical_force_N[e] / F, 1.0, 0.01)
+          << "travel " << p.punch_travel_mm << " element " << e;
       ++checked;
     }
     EXPECT_GT(checked, 3);
@@ -98,11 +98,13 @@ TEST(AxisymForming, StickingFrictionRuns) {
 }
 
 TEST(AxisymForming, RateIndependentResultsDoNotDependOnPunchSpeed) {
-  const RunResult a = Stretch("0.04", "30", {{"process.punch_travel_mm", "10"},
-                                              {"process.output_travels_mm", "[5.0, 10.0]"}});
-  const RunResult b = Stretch("0.04", "30", {{"process.punch_travel_mm", "10"},
-                                              {"process.output_travels_mm", "[5.0, 10.0]"},
-                                              {"process.punch_speed_mm_per_s", "25"}});
+  const RunResult a =
+      Stretch("0.04", "30",
+              {{"process.punch_travel_mm", "10"}, {"process.output_travels_mm", "[5.0, 10.0]"}});
+  const RunResult b = Stretch("0.04", "30",
+                              {{"process.punch_travel_mm", "10"},
+                               {"process.output_travels_mm", "[5.0, 10.0]"},
+                               {"process.punch_speed_mm_per_s", "25"}});
   ASSERT_TRUE(a.completed() && b.completed());
   ASSERT_EQ(a.steps.size(), b.steps.size());
   for (std::size_t i = 0; i < a.steps.size(); ++i) {
@@ -123,8 +125,8 @@ TEST(AxisymForming, DeterministicBitForBit) {
 
 TEST(AxisymForming, FailureStopsWithAMessageAndKeepsTheSteps) {
   // Two iterations per step cannot converge: the run must stop cleanly, not crash or loop.
-  const RunResult r = Stretch("0.04", "20", {{"numerics.max_iterations", "2"},
-                                              {"numerics.max_cutbacks", "2"}});
+  const RunResult r =
+      Stretch("0.04", "20", {{"numerics.max_iterations", "2"}, {"numerics.max_cutbacks", "2"}});
   EXPECT_FALSE(r.completed());
   EXPECT_FALSE(r.message.empty());
   EXPECT_FALSE(r.profiles.empty());

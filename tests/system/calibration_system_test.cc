@@ -14,14 +14,21 @@
 // tests, to be switched on once the forward map is smooth in the parameters (fixed stroke grid
 // with contact sub-steps, numerics.md §5.2): today the solver jitter, not the data noise,
 // dominates the misfit, so the linearised intervals are too narrow.
+// Re-measured on the Heun / fixed-travel-grid solver (commit 146c547): still jittery (friction
+// +-0.0005 moves the force by ~+-5 N at 10 mm, ~+-60 N at 12 mm, ~+-100 N at 20 mm, not
+// monotonically); the four-parameter fit lands 1-5 % off (x0.7: friction -5 %, K -3 %, n -2.5 %,
+// R +5 %), so both DISABLED_ tests stay disabled. data/calibration/README.md has the figures.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "calibrate.h"
 #include "default_forward_model.h"
+#include "measurement.h"
 #include "scene/load_scene.h"
 #include "scene/scene_table.h"
 #include "synthetic.h"
@@ -77,6 +84,53 @@ std::vector<Measurement> synthetic(const Truth& t, double noise_relative, unsign
        {MeasurementKind::kThicknessStrain, "thick_10mm", 10.0, radii, noise_relative, 0.0},
        {MeasurementKind::kThicknessStrain, "thick_20mm", 20.0, radii, noise_relative, 0.0}},
       seed);
+}
+
+// Regenerates the synthetic data sets in data/calibration/ (see its README.md): the same runs as
+// synthetic() above, noise-free and with 1 % Gaussian noise (seed 17). Disabled because it writes
+// into the source tree; run it by hand with
+//   build-cal/tests/vs_system_tests --gtest_also_run_disabled_tests
+//       --gtest_filter=CalibrationSystem.DISABLED_WriteSyntheticDataSets
+// VS_CALIBRATION_DATA_DIR redirects the output (default: <source>/data/calibration).
+TEST(CalibrationSystem, DISABLED_WriteSyntheticDataSets) {
+  const char* dir_env = std::getenv("VS_CALIBRATION_DATA_DIR");
+  const std::filesystem::path dir =
+      dir_env ? std::filesystem::path(dir_env)
+              : std::filesystem::path(VS_SOURCE_DIR) / "data" / "calibration";
+  std::filesystem::create_directories(dir);
+  const Truth truth;
+  const std::string settings =
+      "blank.elements=24 process.punch_travel_mm=20 numerics.tolerance=1e-8 "
+      "process.output_travels_mm=[10, 20], the scene file otherwise unchanged";
+  const std::string generator =
+      "tests/system/calibration_system_test.cc CalibrationSystem.DISABLED_WriteSyntheticDataSets "
+      "(see data/calibration/README.md)";
+  struct Set {
+    std::string prefix;
+    double noise;
+    unsigned long long seed;
+  };
+  for (const Set& set :
+       {Set{"synthetic_ex1_clean", 0.0, 1}, Set{"synthetic_ex1_noise1pct_seed17", 0.01, 17}}) {
+    for (Measurement m : synthetic(truth, set.noise, set.seed)) {
+      // Replace the absolute scene path in the source line by the repository-relative one.
+      for (auto& [key, value] : m.provenance) {
+        if (key == "source") {
+          value =
+              "SYNTHETIC data, not a measurement: forward solver run of "
+              "data/scenes/ex1_hemispherical_stretching.toml (vs::make_synthetic_measurements)";
+        }
+      }
+      m.provenance.emplace_back("forward settings", settings);
+      m.provenance.emplace_back("generator", generator);
+      const auto path = dir / fmt::format("{}_{}.csv", set.prefix, m.name);
+      write_measurement_csv(m, path.string());
+      fmt::print("wrote {}\n", path.string());
+      // What was written reads back as the same data.
+      const Measurement back = read_measurement_csv(path.string(), m.kind);
+      EXPECT_EQ(back.y, m.y) << path;
+    }
+  }
 }
 
 ParameterSpec param(const std::string& address, double initial, double lower, double upper,
