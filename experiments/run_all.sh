@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates every experiment and experiments/REPORT.md from the current code.
-#   experiments/run_all.sh           full studies (about 10-20 min on 2 cores), results in
+#   experiments/run_all.sh           full studies (about 10 min on 2 cores), results in
 #                                    experiments/<study>/results/ and experiments/REPORT.md
 #   experiments/run_all.sh --quick   reduced studies (under a minute), results and REPORT.md in
 #                                    build-exp/experiments-quick/ (the committed results stay)

@@ -1,5 +1,6 @@
 // Issue 2 performance benchmark: example 1 (hemispherical stretching, friction 0.04) to full
-// travel at 25, 50, 100, 200 and 400 elements, single thread. Reports the median wall time, steps,
+// travel at 12, 24, 48 and 69 elements (69 is the finest mesh whose elements are not shorter than
+// the 0.85 mm thickness; finer meshes are outside the thin-shell model), single thread. Reports the median wall time, steps,
 // iterations, peak load and the final pole thickness strain, their deviation from the finest mesh,
 // and which mesh is within 1% of the finest against the 50 ms goal.
 //
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
   const StudyArgs args =
       parse_args(argc, argv, std::string(VS_SOURCE_DIR) + "/experiments/01_performance/results");
   const std::vector<int> meshes =
-      args.quick ? std::vector<int>{25, 50, 100} : std::vector<int>{25, 50, 100, 200, 400};
+      args.quick ? std::vector<int>{12, 24, 48} : std::vector<int>{12, 24, 48, 69};
   const std::string path = scene_path(VS_SOURCE_DIR, "ex1_hemispherical_stretching");
   const std::string machine = machine_description();
   const std::string load = load_average();
@@ -55,8 +56,9 @@ int main(int argc, char** argv) {
     r.pole = pole_thickness_strain(fin);
     r.thinnest = *std::min_element(fin.eps_thickness.begin(), fin.eps_thickness.end());
     r.thinnest_r0 = thinnest_r0(fin);
-    std::cout << fmt::format("  {:4d} elements: {:8.1f} ms, {}\n", n, 1e3 * r.run.wall_s,
-                             r.run.result.message);
+    std::cout << fmt::format("  {:4d} elements: {:8.1f} ms, {}{}\n", n, 1e3 * r.run.wall_s,
+                             r.run.result.message,
+                             r.run.result.warnings.empty() ? "" : " [solver warning]");
     rows.push_back(std::move(r));
   }
 
@@ -76,7 +78,8 @@ int main(int argc, char** argv) {
               "thinnest_r0_mm",
               "dev_peak_vs_finest",
               "dev_pole_vs_finest",
-              "completed"};
+              "completed",
+              "solver_warning"};
   int chosen = -1;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const Row& r = rows[i];
@@ -89,7 +92,8 @@ int main(int argc, char** argv) {
            std::to_string(res.total_iterations),
            fmt::format("{:.1f}", 1.0 * res.total_iterations / steps), fmt::format("{:.1f}", r.peak),
            fmt::format("{:.5f}", r.pole), fmt::format("{:.5f}", r.thinnest),
-           fmt::format("{:.3f}", r.thinnest_r0), pct(dp), pct(de), res.completed() ? "yes" : "no"});
+           fmt::format("{:.3f}", r.thinnest_r0), pct(dp), pct(de), res.completed() ? "yes" : "no",
+           res.warnings.empty() ? "-" : "yes"});
   }
   std::cout << "\n" << t.text();
 
@@ -101,16 +105,24 @@ int main(int argc, char** argv) {
       vsx::g4(fine.run.result.steps.back().punch_travel_mm), args.quick ? "1" : "3-5", machine,
       load);
   md += t.markdown() + "\n";
-  if (rows.size() >= 3) {
-    const std::size_t k = rows.size();
-    const Richardson rp = richardson(rows[k - 3].peak, rows[k - 2].peak, rows[k - 1].peak);
-    const Richardson re = richardson(rows[k - 3].pole, rows[k - 2].pole, rows[k - 1].pole);
+  // Observed order from the finest three meshes at refinement ratio 2 (n, 2n, 4n); the finest
+  // valid mesh (69 elements) is not a power-of-two multiple, so it is compared separately.
+  for (std::size_t i = rows.size(); i-- > 0;) {
+    if (i < 2 || rows[i].elements != 2 * rows[i - 1].elements ||
+        rows[i - 1].elements != 2 * rows[i - 2].elements)
+      continue;
+    const Row &a = rows[i - 2], &b = rows[i - 1], &c = rows[i];
+    const Richardson rp = richardson(a.peak, b.peak, c.peak);
+    const Richardson re = richardson(a.pole, b.pole, c.pole);
     md += fmt::format(
-        "Observed convergence order from the three finest meshes: peak load p = {:.2f}, pole "
-        "thickness strain p = {:.2f}; estimated error of the finest mesh: peak load {}, pole "
-        "strain {}.\n\n",
-        rp.order, re.order, pct(rp.error_est / std::abs(rp.value)),
-        pct(re.error_est / std::abs(re.value)));
+        "Observed convergence order from {}/{}/{} elements (ratio 2): peak load p = {:.2f}, pole "
+        "thickness strain p = {:.2f}; estimated error of {} elements: peak load {}, pole strain "
+        "{} (when p is outside 0.5-4 or the sequence is not monotone the estimate is the last "
+        "difference). The load at a given travel carries about 0.5% of mesh noise from the "
+        "discrete contact front, so differences below that are not convergence.\n\n",
+        a.elements, b.elements, c.elements, rp.order, re.order, c.elements,
+        pct(rp.error_est / std::abs(rp.value)), pct(re.error_est / std::abs(re.value)));
+    break;
   }
   if (rows.size() >= 2) {
     const Row& next = rows[rows.size() - 2];

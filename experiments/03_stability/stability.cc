@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
       "travel. Volume drift = max |V - V0| / V0. A case "
       "is `ok` when it completes and passes every check, `stopped` when the solver ends early "
       "with a message, `GARBAGE` when it returns without stopping but fails a check, `ok*` when "
-      "it passes but the volume drifts above round-off (1e-9). Conditioning "
+      "it passes but the volume drifts above round-off (1e-9) or the solver raises a warning (e.g. "
+      "elements shorter than the thickness). Conditioning "
       "estimates are not exposed by `vs::simulate` (iterations and cut-backs stand in for "
       "them).\n\n",
       args.quick ? ", travel 5 mm (quick)" : "", machine_description());

@@ -139,6 +139,8 @@ inline StabilityRow evaluate_stability(const std::string& source_dir, const Stab
   } else if (row.volume_drift > 1e-9) {
     row.warnings.push_back(fmt::format("volume drift {:.2g} > 1e-9", row.volume_drift));
   }
+  // The solver's own trust caveats (e.g. elements shorter than the thickness).
+  for (const std::string& w : r.warnings) row.warnings.push_back("solver: " + w);
   // Picard (the paper's direct iteration) stops on the velocity change only: its residual is
   // reported but judged against a loose 1e-3.
   const double residual_limit =

@@ -36,10 +36,12 @@ inline std::vector<StabilityCase> stability_cases(const std::string& source_dir,
   add1("thickness", "h/Rp = 1e-4", {{"blank.thickness_mm", "0.00508"}});
   if (!quick) add1("thickness", "h/Rp = 1e-3", {{"blank.thickness_mm", "0.0508"}});
   add1("thickness", "h/Rp = 1e-2", {{"blank.thickness_mm", "0.508"}});
-  add1("thickness", "h/Rp = 1e-1 (die 56.5, blank 62.85)",
+  // 12 elements: 5.2 mm long, not shorter than the 5.08 mm sheet (valid shell mesh).
+  add1("thickness", "h/Rp = 1e-1 (die 56.5, blank 62.85, 12 elements)",
        {{"blank.thickness_mm", "5.08"},
         {"tool.die.radius_mm", "56.5"},
-        {"blank.radius_mm", "62.85"}});
+        {"blank.radius_mm", "62.85"},
+        {"blank.elements", "12"}});
   for (const char* r : quick ? std::vector<const char*>{"0.2", "5"}
                              : std::vector<const char*>{"0.2", "0.5", "2", "5"}) {
     add1("anisotropy", std::string("R = ") + r, {{"material.r_value", r}});
@@ -73,9 +75,11 @@ inline std::vector<StabilityCase> stability_cases(const std::string& source_dir,
     add("scene", "ex2 bundled (40 mm)", {}, "ex2_hemispherical_deep_drawing");
     add("scene", "ex2 punch friction 0.5", {{"tool.punch.friction", "0.5"}},
         "ex2_hemispherical_deep_drawing");
-    add("scene", "ex3 bundled (40 mm)", {}, "ex3_flat_punch_cup");
-    add("scene", "ex3 friction sticking on the punch", {{"tool.punch.friction", "sticking"}},
-        "ex3_flat_punch_cup");
+    // The bundled ex3 mesh (80 elements of 0.67 mm, thickness 1 mm) is outside the thin-shell
+    // model; 50 elements (1.075 mm) are the valid counterpart.
+    add("scene", "ex3 50 elements (40 mm)", {{"blank.elements", "50"}}, "ex3_flat_punch_cup");
+    add("scene", "ex3 50 elements, sticking on the punch",
+        {{"blank.elements", "50"}, {"tool.punch.friction", "sticking"}}, "ex3_flat_punch_cup");
   }
   add1("units", "all lengths x 10 (time x 10)", ex1_scaled(ex1_scene, 10.0));
   if (!quick) {

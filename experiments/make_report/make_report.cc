@@ -30,8 +30,10 @@ constexpr Study kStudies[] = {
      "`build-exp/experiments/performance_benchmark`."},
     {"02_work_precision", "2. Error against run time (work-precision)",
      "Each bundled scene with one discretisation knob varied at a time (elements, travel and "
-     "strain caps per step, step fraction, through-thickness points, tolerance) plus coarse "
-     "combinations; errors against a reference built from three combined refinement levels. "
+     "strain caps per step, step fraction, through-thickness points, tolerance, time integration) "
+     "plus coarse combinations; errors against a reference built from three combined refinement "
+     "levels on valid meshes (element length >= thickness); then a time-integration study "
+     "(Euler against Heun over the travel increment). "
      "Command: `build-exp/experiments/work_precision`."},
     {"03_stability", "3. Stability on stiff and extreme cases",
      "Example 1 with one extreme setting at a time (plus a few example 2/3 cases): convergence "

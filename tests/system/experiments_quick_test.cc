@@ -21,31 +21,36 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 vs::RunResult run_ex1(const Overrides& ov) { return run_once(make_scene(kEx1, ov), kInf).result; }
 
-// 01_performance in small: ex1 to 10 mm at 25, 50, 100 and 200 elements; the peak load moves
-// monotonically towards the finest mesh and every run is timed.
+// 01_performance in small: ex1 to 20 mm at 12, 24, 48 and 69 elements (all valid meshes); the
+// peak loads agree with the finest valid mesh and every run is timed.
 TEST(ExperimentsQuick, PerformanceMeshRefinementConverges) {
-  // Meshes up to element length ~ thickness (70 elements for ex1); finer shell meshes are outside
-  // the thin-shell model (the solver warns). The load at a given travel carries ~0.5% of mesh
-  // noise from the discrete contact front (measured 24 805 / 25 427 / 25 504 / 25 356 N at
-  // 20 mm for 12 / 24 / 48 / 70 elements), so the check is agreement, not monotone order.
+  // Meshes up to element length = thickness (69 elements of 0.858 mm for ex1; 70 elements are
+  // 0.845 mm < 0.85 mm and the solver warns); finer shell meshes are outside the thin-shell
+  // model. The load at a given travel carries ~0.5% of mesh noise from the discrete contact front
+  // (measured peak 24 805 / 25 427 / 25 504 / 25 623 N to 20 mm for 12 / 24 / 48 / 69 elements;
+  // 70 elements give 25 356 N), so the check is agreement, not monotone order; 12 elements
+  // (4.9 mm) are 3.2% low.
   std::vector<double> peak;
-  for (int n : {12, 24, 48, 70}) {
+  for (int n : {12, 24, 48, 69}) {
     const TimedRun t = run_once(make_scene(kEx1, {{"blank.elements", std::to_string(n)},
                                                   {"process.punch_travel_mm", "20"},
                                                   {"process.output_travels_mm", "[10.0, 20.0]"}}),
                                 kInf);
     ASSERT_TRUE(t.result.completed()) << t.result.message;
+    EXPECT_TRUE(t.result.warnings.empty()) << n << " elements: outside the valid mesh range";
     EXPECT_GT(t.wall_s, 0.0);
     peak.push_back(peak_load(t.result).force_N);
   }
-  EXPECT_LT(rel(peak[0], peak[3]), 0.03);
+  EXPECT_LT(rel(peak[0], peak[3]), 0.04);
   EXPECT_LT(rel(peak[1], peak[3]), 0.01);
   EXPECT_LT(rel(peak[2], peak[3]), 0.01);
 }
 
 // 02_work_precision in small: refining elements and the step caps together reduces the error of
-// the peak load and of the load curve against the finest level.
+// the peak load and of the load curve against the finest level. Meshes 8..64 elements stay within
+// the valid range (element length >= thickness: at most 69 elements for ex1).
 TEST(ExperimentsQuick, WorkPrecisionErrorDecreasesWithRefinement) {
+  EXPECT_EQ(max_valid_elements(make_scene(kEx1, {})), 69);
   const Overrides base{{"process.punch_travel_mm", "8"},
                        {"process.output_travels_mm", "[4.0, 8.0]"}};
   std::vector<Outcome> all;
@@ -53,11 +58,12 @@ TEST(ExperimentsQuick, WorkPrecisionErrorDecreasesWithRefinement) {
     const double f = std::ldexp(1.0, k);
     Outcome o;
     o.setting = {"refined", k == 3 ? "L2" : fmt::format("c{}", k), base};
-    o.setting.ov.push_back({"blank.elements", std::to_string(static_cast<int>(12 * f))});
+    o.setting.ov.push_back({"blank.elements", std::to_string(static_cast<int>(8 * f))});
     o.setting.ov.push_back({"numerics.max_travel_increment_mm", fmt::format("{}", 1.0 / f)});
     o.setting.ov.push_back({"numerics.max_strain_increment", fmt::format("{}", 0.04 / f)});
     o.run = run_once(make_scene(kEx1, o.setting.ov), kInf);
     ASSERT_TRUE(o.run.result.completed()) << o.run.result.message;
+    EXPECT_TRUE(o.run.result.warnings.empty()) << "mesh outside the valid range";
     measure(&o);
     all.push_back(std::move(o));
   }
