@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "calibrate_command.h"
+#include "fit_hardening_command.h"
 #include "core/error.h"
 #include "output/build_info.h"
 #include "output/load_travel_stream.h"
@@ -187,6 +188,7 @@ int main(int argc, char** argv) {
   });
 
   vs::add_calibrate_command(app);
+  vs::add_fit_hardening_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,29 @@
+// Quick variant of experiments/04_esaform_cup: the bundled ESAFORM 2021 AA6016-T4 cup (Swift
+// TUAT, friction 0.07, holder force 10 kN) drawn to completion; the predicted cup height against
+// the measured mean 34.15 mm (range 33.13-35.26 mm from the earing profile).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../../experiments/04_esaform_cup/cup_height.h"
+
+namespace {
+
+TEST(EsaformCup, DrawsCompletelyAndPredictsTheMeasuredHeight) {
+  // The bundled scene: 40 mm of punch travel; the rim enters the die opening at ~38.6 mm. (Past
+  // the full draw the solver may stop without convergence; the drawn state is what counts.)
+  const vs::Scene scene = vsx::make_cup_scene(VS_SOURCE_DIR, {});
+  const vs::RunResult result = vs::simulate(scene);
+  const vsx::CupHeight cup = vsx::evaluate_cup(result, vsx::cup_geometry(scene));
+  ASSERT_TRUE(cup.drawn) << "rim still at r = " << cup.rim_r_mm << " mm; " << result.message;
+  EXPECT_GT(cup.flange_off_travel_mm, 0.0);
+  EXPECT_LT(cup.flange_off_travel_mm, cup.travel_mm);
+  // An axisymmetric model predicts the mean height; the ears span 33.13-35.26 mm (-3 %/+3 %).
+  // Tolerance 10 % of the mean: the model predicts 32.7 mm (-4.3 %), below the lowest ear; the
+  // holder is a force, not the benchmark's gap (README.md of experiments/04_esaform_cup).
+  EXPECT_NEAR(cup.height_mm, 34.15, 0.10 * 34.15);
+  // Once the rim is in the die opening the height no longer changes much.
+  EXPECT_NEAR(cup.height_end_mm, cup.height_mm, 1.0);
+}
+
+}  // namespace
