@@ -4,5 +4,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+scripts/build.sh vshell
 ./build/app/vshell run data/scenes/ex1_hemispherical_stretching.toml "$@"
