@@ -158,13 +158,14 @@ struct LinearFake {
 };
 
 inline ParameterSpec param(const std::string& address, double initial, double lower, double upper,
-                           double scale) {
+                           double scale, bool fixed = false) {
   ParameterSpec p;
   p.address = address;
   p.initial = initial;
   p.lower = lower;
   p.upper = upper;
   p.scale = scale;
+  p.fixed = fixed;
   p.where = "test";
   return p;
 }

@@ -28,6 +28,7 @@
 
 #include "calibrate.h"
 #include "default_forward_model.h"
+#include "inverse/inverse_test_support.h"
 #include "measurement.h"
 #include "scene/load_scene.h"
 #include "scene/scene_table.h"
@@ -133,18 +134,7 @@ TEST(CalibrationSystem, DISABLED_WriteSyntheticDataSets) {
   }
 }
 
-ParameterSpec param(const std::string& address, double initial, double lower, double upper,
-                    double scale, bool fixed = false) {
-  ParameterSpec p;
-  p.address = address;
-  p.initial = initial;
-  p.lower = lower;
-  p.upper = upper;
-  p.scale = scale;
-  p.fixed = fixed;
-  p.where = "system test";
-  return p;
-}
+using testing::param;
 
 // The four parameters of the issue; `free` picks which are identified (others fixed at truth).
 CalibrationConfig config_for(const std::vector<Measurement>& data, const Truth& t, double start,
