@@ -31,6 +31,7 @@
 #include "scene/load_scene.h"
 #include "scene/scene.h"
 #include "scene/scene_table.h"
+#include "shell3d/forming/forming_cli.h"
 
 namespace {
 
@@ -94,6 +95,11 @@ int run_command(const RunArgs& args) {
   const vs::Scene scene = load_scene_with_overrides(args.scene);
   const std::string dir = args.output_dir.empty() ? scene.output.directory : args.output_dir;
   create_output_folder(dir);
+  if (scene.geometry == vs::Geometry::kShell3d) {
+    const vs::shell3d::Shell3dCliOptions options{dir, args.quiet, args.verbose};
+    return vs::shell3d::run_shell3d_scene(scene, options, std::cout, std::cerr) ? kExitOk
+                                                                                : kExitRunFailed;
+  }
 
   // Streamed so that a crash keeps every converged step; rewritten identically at the end.
   vs::LoadTravelStream stream((fs::path(dir) / "load_travel.csv").string());
@@ -126,6 +132,18 @@ int check_command(const SceneArgs& args) {
   const vs::Scene scene = load_scene_with_overrides(args);
   std::string tools;
   for (const vs::ToolSpec& tool : scene.tools) tools += (tools.empty() ? "" : ", ") + tool.name;
+  if (scene.geometry == vs::Geometry::kShell3d) {
+    std::cout << "ok\n"
+              << fmt::format(
+                     "{}: \"{}\": 3D shell, {} blank {} mm, thickness {} mm, quarter model, {} "
+                     "divisions; tools: {}; punch travel {} mm\n",
+                     scene.source, scene.title,
+                     scene.blank.shape == vs::BlankShape::kCircle ? "circular, radius"
+                                                                  : "square, half side",
+                     scene.blank.radius_mm, scene.blank.thickness_mm, scene.blank.divisions,
+                     tools.empty() ? "none" : tools, scene.process.punch_travel_mm);
+    return kExitOk;
+  }
   std::cout << "ok\n"
             << fmt::format(
                    "{}: \"{}\": blank radius {} mm, thickness {} mm, {} elements; tools: {}; "

@@ -9,6 +9,8 @@ const char* name(Geometry g) {
   switch (g) {
     case Geometry::kAxisymmetric:
       return "axisymmetric";
+    case Geometry::kShell3d:
+      return "shell3d";
   }
   return "unknown";
 }

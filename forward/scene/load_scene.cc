@@ -2,14 +2,41 @@
 // (scene_reader.cc), then check the rules that span sections (scene_checks.cc).
 #include "scene/load_scene.h"
 
+#include <fmt/format.h>
+
 #include <filesystem>
+#include <string_view>
 
 #include "scene/scene_checks.h"
 #include "scene/scene_diagnostics.h"
+#include "scene/scene_keys.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_table.h"
 
 namespace vs {
+
+namespace {
+
+// Keys that only one geometry uses (KeySpec::geometry); setting one in a scene of the other
+// geometry is an error, like a key of another hardening law.
+void check_geometry_keys(const toml::table& table, const Scene& scene, const std::string& source) {
+  const KeySpec& geometry_key = *find_key("", "geometry");
+  const std::string_view geometry =
+      geometry_key.choices.at(static_cast<std::size_t>(scene.geometry));
+  for (const KeySpec& k : scene_keys()) {
+    if (k.geometry.empty() || k.geometry == geometry) continue;
+    const toml::table* section = table[k.section].as_table();
+    if (section == nullptr) continue;
+    for (auto&& [key, node] : *section) {
+      if (key.str() != k.name) continue;
+      fail_at(source, key.source(),
+              fmt::format("key '{}' is only used by geometry = \"{}\"", k.address_in_section(),
+                          k.geometry));
+    }
+  }
+}
+
+}  // namespace
 
 Scene load_scene(const std::string& path) {
   const toml::table table = read_scene_table(path);
@@ -21,6 +48,7 @@ Scene scene_from_table(const toml::table& table, const std::string& source,
   SceneSourceMap where(source);
   Scene scene = read_scene_sections(table, base_dir, where);
   scene.source = source;
+  check_geometry_keys(table, scene, source);
   check_scene_consistency(scene, where);
   return scene;
 }

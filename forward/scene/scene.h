@@ -9,7 +9,21 @@
 
 namespace vs {
 
-enum class Geometry { kAxisymmetric };
+enum class Geometry {
+  kAxisymmetric,  // meridian of a circular blank, 2-node conical shell elements (vs::simulate)
+  kShell3d,       // general 3D viscous shell, 9-node elements (vs::shell3d::simulate_shell3d)
+};
+
+// Outline of a 3D blank (geometry = shell3d).
+enum class BlankShape {
+  kCircle,  // circle of radius blank.radius_mm
+  kSquare,  // square of half side blank.radius_mm, centred on the punch axis
+};
+
+// Part of the blank a 3D model meshes (geometry = shell3d).
+enum class BlankSymmetry {
+  kQuarter,  // x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; forces reported x 4
+};
 
 // Boundary condition at the outer rim of the blank.
 enum class EdgeCondition {
@@ -24,6 +38,10 @@ struct BlankSpec {
   int elements = 50;           // number of 2-node elements along the meridian
   double grading = 1.0;        // length ratio last/first element (geometric grading), > 0
   EdgeCondition edge = EdgeCondition::kPinned;
+  // geometry = shell3d only:
+  BlankShape shape = BlankShape::kCircle;
+  BlankSymmetry symmetry = BlankSymmetry::kQuarter;
+  int divisions = 8;  // 9-node elements along each edge of each structured block
 };
 
 enum class HardeningLaw {
@@ -103,6 +121,12 @@ enum class TimeIntegration {
   kEuler,  // the paper's forward update with the start-of-step velocity: O(dt)
 };
 
+// Strain evaluation of the 9-node shell (geometry = shell3d; forward/shell3d/shell9.h).
+enum class ShellElementRule {
+  kMitc9,           // MITC9 assumed covariant strains (Bucalem-Bathe): no membrane locking
+  kPaperSelective,  // the paper's rule: in-plane 3x3, transverse shear 2x2
+};
+
 struct NumericsSpec {
   int thickness_points = 5;              // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
@@ -115,6 +139,7 @@ struct NumericsSpec {
   double strain_rate_cutoff = 1e-4;      // cut-off rate, relative to punch_speed / blank radius
   double friction_regularisation = 1e-4; // Coulomb arctan velocity, relative to punch speed
   int max_cutbacks = 8;                  // step halvings before the run stops
+  ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
 };
 
 struct OutputSpec {

@@ -87,6 +87,12 @@ void check_tools(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
 
 void check_blank(const Scene& scene, const ToolRoles& roles, const SceneSourceMap& where) {
   const BlankSpec& blank = scene.blank;
+  if (scene.geometry == Geometry::kShell3d && roles.holder != nullptr) {
+    where.fail(tool_address(*roles.holder, "kind"),
+               fmt::format("blank holder '{}': geometry = \"shell3d\" has no blank holder yet "
+                           "(use the axisymmetric geometry or a clamped / pinned edge)",
+                           roles.holder->name));
+  }
   if (blank.edge == EdgeCondition::kFree && roles.die == nullptr) {
     where.fail("blank.edge",
                "blank.edge = \"free\" needs a die: without one nothing holds the sheet");
@@ -137,6 +143,8 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "`edge = \"free\"` requires a die (otherwise nothing holds the sheet).",
       "Thin shell: blank `thickness_mm` < blank `radius_mm` / 5.",
       "`output_travels_mm` strictly increasing, each in (0, `punch_travel_mm`].",
+      "Keys marked 'axisymmetric only' / 'shell3d only' are rejected in scenes of the other "
+      "`geometry`; `geometry = \"shell3d\"` has no blank holder yet.",
   };
   return rules;
 }

@@ -55,6 +55,7 @@ std::string allowed_text(const KeySpec& key, bool markdown) {
 }
 
 std::string applies_text(const KeySpec& key) {
+  if (!key.geometry.empty()) return fmt::format("geometry {}", key.geometry);
   if (key.applies_to.empty()) return "";
   std::string out;
   for (std::string_view v : key.applies_to) out += (out.empty() ? "" : ", ") + std::string(v);
@@ -63,6 +64,10 @@ std::string applies_text(const KeySpec& key) {
 
 // Whether the key is used by the section's default variant (so its default line is active).
 bool used_by_default_variant(const KeySpec& key) {
+  if (!key.geometry.empty() &&
+      default_toml_text(*find_key("", "geometry")) != fmt::format("\"{}\"", key.geometry)) {
+    return false;  // used only by another geometry than the default one
+  }
   const VariantSelector* selector = find_selector(key.section);
   if (selector == nullptr || key.applies_to.empty()) return true;
   const std::string text = default_toml_text(*find_key(key.section, selector->key));
@@ -107,7 +112,7 @@ void append_markdown_row(std::string& out, const KeySpec& key) {
   out += fmt::format(
       "| `{}` | {} | {} | {} | {} | {} | {} |\n", key.name, type_text(key), default_text,
       key.unit.empty() ? "-" : std::string(key.unit), escape_cell(allowed_text(key, true)),
-      key.applies_to.empty() ? "all" : escape_cell(applies_text(key)), escape_cell(key.doc));
+      applies_text(key).empty() ? "all" : escape_cell(applies_text(key)), escape_cell(key.doc));
 }
 
 }  // namespace

@@ -110,22 +110,40 @@ std::vector<KeySpec> build_keys() {
   // Top level.
   add(make("", "title", KeyType::kString, string_field<&top, &Scene::title>(), "", Range{},
            "Free text shown in outputs and plots."));
-  add(choice("", "geometry", enum_field<&top, &Scene::geometry>(), {"axisymmetric"},
-             "Model geometry; only the axisymmetric shell is implemented."));
+  add(choice("", "geometry", enum_field<&top, &Scene::geometry>(), {"axisymmetric", "shell3d"},
+             "Model geometry: axisymmetric (2-node conical shell along the meridian) or shell3d "
+             "(9-node 3D shell; keys marked 'shell3d only' apply)."));
 
   // [blank]
   add(make("blank", "radius_mm", kFloat, float_field<&blank, &BlankSpec::radius_mm>(), "mm",
-           open_above(0), "Initial outer radius of the circular blank."));
+           open_above(0),
+           "Initial outer radius of the circular blank (shell3d square blank: half side)."));
   add(make("blank", "thickness_mm", kFloat, float_field<&blank, &BlankSpec::thickness_mm>(), "mm",
            open_above(0), "Initial sheet thickness (must be < radius_mm / 5: thin shell)."));
   add(make("blank", "elements", kInt, int_field<&blank, &BlankSpec::elements>(), "", at_least(4),
-           "Number of 2-node elements along the meridian."));
+           "Number of 2-node elements along the meridian (axisymmetric only)."))
+      .geometry = "axisymmetric";
   add(make("blank", "grading", kFloat, float_field<&blank, &BlankSpec::grading>(), "",
            open_above(0),
-           "Length ratio last/first element (geometric); < 1 refines the rim, > 1 the pole."));
+           "Length ratio last/first element (geometric); < 1 refines the rim, > 1 the pole "
+           "(axisymmetric only)."))
+      .geometry = "axisymmetric";
   add(choice("blank", "edge", enum_field<&blank, &BlankSpec::edge>(), {"pinned", "clamped", "free"},
              "Rim condition: pinned (no radial/axial motion, rotation free), clamped (also no "
              "rotation), free (draws in; needs a die)."));
+  add(choice("blank", "shape", enum_field<&blank, &BlankSpec::shape>(), {"circle", "square"},
+             "Blank outline (shell3d only): circle of radius radius_mm, or square of half side "
+             "radius_mm centred on the punch axis."))
+      .geometry = "shell3d";
+  add(choice("blank", "symmetry", enum_field<&blank, &BlankSpec::symmetry>(), {"quarter"},
+             "Part meshed (shell3d only): quarter = x, y >= 0 with symmetry planes x = 0 and "
+             "y = 0; forces are reported for the whole blank."))
+      .geometry = "shell3d";
+  add(make("blank", "divisions", kInt, int_field<&blank, &BlankSpec::divisions>(), "",
+           closed(1, 64),
+           "9-node elements along each edge of each mesh block (shell3d only): the quarter "
+           "circle has 3 n x n blocks (3 n^2 elements), the quarter square one (n^2)."))
+      .geometry = "shell3d";
 
   // [material]
   add(make("material", "r_value", kFloat, float_field<&material, &MaterialSpec::r_value>(), "",
@@ -259,6 +277,11 @@ std::vector<KeySpec> build_keys() {
            "Coulomb arctan slip velocity relative to the punch speed."));
   add(make(nu, "max_cutbacks", kInt, int_field<&numerics, &NumericsSpec::max_cutbacks>(), "",
            closed(0, 30), "Step halvings before the run stops."));
+  add(choice(nu, "element_rule", enum_field<&numerics, &NumericsSpec::element_rule>(),
+             {"mitc9", "paper_selective"},
+             "9-node shell strains (shell3d only): mitc9 assumed strains (no membrane locking) or "
+             "the paper's selective rule (in-plane 3x3, transverse shear 2x2)."))
+      .geometry = "shell3d";
 
   // [output]
   add(make("output", "directory", KeyType::kString, string_field<&output, &OutputSpec::directory>(),
@@ -307,7 +330,7 @@ const std::vector<KeySpec>& scene_keys() {
 const std::vector<SectionSpec>& scene_sections() {
   static const std::vector<SectionSpec> sections = {
       {"", "(top level)", "Title and model geometry."},
-      {"blank", "[blank]", "The circular blank and its mesh."},
+      {"blank", "[blank]", "The blank (circular, or square in 3D) and its mesh."},
       {"material", "[material]", "Sheet material: anisotropy here, flow curve and rate law below."},
       {"material.hardening", "[material.hardening]",
        "Strain hardening; the keys allowed depend on `law`."},

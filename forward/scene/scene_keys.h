@@ -66,6 +66,9 @@ struct KeySpec {
   bool required = false;        // no default: must be given (where it applies)
   bool sticking_alias = false;  // also accepts the string "sticking" (= +inf)
   bool identifier = false;      // string restricted to [A-Za-z0-9_]+
+  // The only model geometry ("axisymmetric", "shell3d") that uses the key; empty = every one.
+  // Setting the key in a scene of another geometry is an error (load_scene.cc).
+  std::string_view geometry;
   std::string_view doc;
   KeyField field;
 

@@ -117,7 +117,12 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
                        double h_weight, int sp) {
     const Eigen::Vector2d gam = Bs * q;
     out->force.noalias() += (Gs * dV) * (Bs.transpose() * gam);
-    if (want_k) out->stiffness.noalias() += (Gs * dV) * (Bs.transpose() * Bs);
+    // The matrix is symmetric: only its lower triangle is accumulated (lazyProduct evaluates just
+    // those coefficients; the blocked GEMM kernel costs more than it saves for thin factors), the
+    // upper one is copied at the end.
+    if (want_k) {
+      out->stiffness.triangularView<Eigen::Lower>() += Bs.transpose().lazyProduct((Gs * dV) * Bs);
+    }
     out->potential += 0.5 * Gs * gam.squaredNorm() * dV;
     out->shear_force[static_cast<std::size_t>(sp)] += (Gs * h_weight) * gam;
   };
@@ -139,7 +144,10 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
         const PointLaw p = evaluate_point(mat, state, flow, d, kind, tangent_weight);
         out->point_rate[static_cast<std::size_t>(flow)] = p.rate;
         out->force.noalias() += dV * (Bm.transpose() * p.stress);
-        if (want_k) out->stiffness.noalias() += Bm.transpose() * (dV * p.D) * Bm;
+        if (want_k) {
+          const Eigen::Matrix<double, 3, Eigen::Dynamic> DB = (dV * p.D) * Bm;
+          out->stiffness.triangularView<Eigen::Lower>() += Bm.transpose().lazyProduct(DB);
+        }
         out->potential += p.potential * dV;
         // Resultants per unit length: dz = h/2 dt, z = t h/2 (weights of [-1, 1] halved).
         Shell9Resultant& R = out->resultant[static_cast<std::size_t>(ip)];
@@ -160,6 +168,10 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
         }
       }
     }
+  }
+
+  if (want_k) {
+    out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
   }
 
   // Drilling: 1/2 k (V3 . omega)^2 at 6-dof nodes (section 6.3: a small artificial in-plane

@@ -83,8 +83,8 @@ TEST(SceneErrors, WrongTypes) {
 
 TEST(SceneErrors, EnumValues) {
   EXPECT_EQ(scene_error("geometry = \"plane_strain\"\n"),
-            "scene.toml:1:12: geometry = \"plane_strain\" is not supported; expected "
-            "\"axisymmetric\"");
+            "scene.toml:1:12: geometry = \"plane_strain\" is not supported; expected one of "
+            "\"axisymmetric\", \"shell3d\"");
   EXPECT_EQ(scene_error("[blank]\nedge = \"pined\"\n"),
             "scene.toml:2:8: blank.edge = \"pined\" is not supported; expected one of "
             "\"pinned\", \"clamped\", \"free\" (did you mean \"pinned\"?)");

@@ -1,0 +1,44 @@
+// Fields derived from a ShellStage for outputs and tests: in-plane principal (major, minor) true
+// strains of every element from the mid-surface metric, and nodal profiles along the symmetry
+// lines and the diagonal of the quarter blank.
+//
+// Principal strains: at the element centre (r = s = 0) the covariant metrics of the initial and
+// current mid-surface, G0 = [g_r0 g_s0]^T [g_r0 g_s0] and G = [g_r g_s]^T [g_r g_s], define the
+// right Cauchy-Green tensor of the in-plane stretch; its eigenvalues are the eigenvalues of
+// G0^-1 G = lambda^2, so eps_major/minor = ln(lambda_1/2) (the mesh is material: the same (r, s)
+// is the same particle). The membrane thickness strain is -(eps_major + eps_minor)
+// (incompressible).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "shell3d/forming/forming_result.h"
+
+namespace vs::shell3d {
+
+struct ElementStrains {
+  std::vector<double> major, minor, thickness, effective;  // per element
+  std::vector<double> r0_mm;                               // initial radius of the centre
+};
+
+ElementStrains element_strains(const ShellMesh& mesh, const ShellStage& stage);
+
+struct LineProfile {
+  std::string line;           // node set name: "y0" (along x), "x0" (along y), "diagonal"
+  std::vector<int> nodes;     // sorted by initial radius
+  std::vector<double> r0_mm;  // initial distance from the punch axis
+  std::vector<double> r_mm;   // current distance from the axis
+  std::vector<double> z_mm;
+  std::vector<double> thickness_mm;
+  std::vector<double> eps_thickness;  // ln(h / h0), nodal
+  std::vector<int> contact_tool;      // -1 free
+};
+
+LineProfile line_profile(const ShellMesh& mesh, const ShellStage& stage, const std::string& line,
+                         double initial_thickness_mm);
+
+// Linear interpolation of (x, y) (x increasing) at xq; clamped to the ends.
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double xq);
+
+}  // namespace vs::shell3d

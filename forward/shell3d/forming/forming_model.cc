@@ -1,0 +1,390 @@
+#include "shell3d/forming/forming_model.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "core/error.h"
+#include "shell3d/forming/forming_mesh.h"
+#include "shell3d/quadrature.h"
+
+namespace vs::shell3d {
+
+namespace {
+
+constexpr double kTwoOverPi = 2.0 / std::numbers::pi;
+
+Shell9Rule element_rule(const Scene& scene) {
+  return scene.numerics.element_rule == ShellElementRule::kMitc9 ? Shell9Rule::kMitc9
+                                                                 : Shell9Rule::kSelective;
+}
+
+bool contains(const std::vector<int>& set, int i) {
+  return std::find(set.begin(), set.end(), i) != set.end();
+}
+
+}  // namespace
+
+FormingModel::FormingModel(const Scene& scene)
+    : scene_(scene),
+      mesh_(forming_mesh(scene)),
+      thick_(simpson_rule(scene.numerics.thickness_points)),
+      rule_(element_rule(scene)),
+      hardening_(scene.material.hardening),
+      law_(scene.material.rate,
+           scene.numerics.strain_rate_cutoff * scene.process.punch_speed_mm_per_s /
+               scene.blank.radius_mm,
+           scene.material.r_value),
+      hill_(law_),
+      tools_(make_tools(scene)) {
+  if (scene.geometry != Geometry::kShell3d) {
+    throw InputError(scene.source + ": the 3D shell solver only runs geometry = \"shell3d\"");
+  }
+  model_ = std::make_unique<ShellModel>(mesh_);
+  if (model_->num_kinked() != 0) throw InputError(scene.source + ": the blank mesh has kinks");
+  assembler_ = std::make_unique<ShellAssembler>(*model_);
+  flow_points_ = shell9_inplane_points(rule_) * thickness_points();
+  nominal_rate_ = scene.process.punch_speed_mm_per_s / scene.blank.radius_mm;
+  friction_velocity_ = scene.numerics.friction_regularisation * scene.process.punch_speed_mm_per_s;
+  for (std::size_t i = 0; i < tools_.size(); ++i) {
+    if (tools_[i].is_punch()) punch_ = static_cast<int>(i);
+  }
+  if (punch_ < 0) throw InputError(scene.source + ": the scene has no punch");
+  for (const ToolSpec& t : scene.tools) {
+    if (t.kind == ToolKind::kBlankHolder) {
+      throw InputError(scene.source + ": geometry = \"shell3d\" has no blank holder yet");
+    }
+  }
+  const int nn = num_nodes();
+  const double tol = 1e-9 * scene.blank.radius_mm;
+  axis_.assign(nn, 0);
+  sym_.assign(nn, 0);
+  eligible_.assign(nn, 1);
+  const auto& x0 = mesh_.set("x0");
+  const auto& y0 = mesh_.set("y0");
+  const auto& edge = mesh_.set("edge");
+  for (int i = 0; i < nn; ++i) {
+    const Vec3& p = mesh_.nodes[i];
+    axis_[i] = std::hypot(p.x(), p.y()) < tol ? 1 : 0;
+    sym_[i] = (contains(x0, i) || contains(y0, i)) ? 1 : 0;
+    if (scene.blank.edge != EdgeCondition::kFree && contains(edge, i)) eligible_[i] = 0;
+  }
+  std::vector<std::set<int>> nb(nn);
+  for (const auto& el : mesh_.elements) {
+    for (int a : el)
+      for (int b : el)
+        if (a != b) nb[a].insert(b);
+  }
+  neighbours_.resize(nn);
+  for (int i = 0; i < nn; ++i) neighbours_[i].assign(nb[i].begin(), nb[i].end());
+}
+
+FormingState FormingModel::initial_state() const {
+  FormingState s;
+  s.x = mesh_.nodes;
+  s.director.assign(num_nodes(), Vec3::UnitZ());
+  s.thickness.assign(num_nodes(), initial_thickness());
+  s.eps_bar.assign(static_cast<std::size_t>(num_elements() * flow_points_), 0.0);
+  s.tool_offset.assign(tools_.size(), Eigen::Vector2d::Zero());
+  s.contact.resize(num_nodes());
+  s.velocity.assign(num_nodes(), Vec3::Zero());
+  s.omega.assign(num_nodes(), Vec3::Zero());
+  return s;
+}
+
+void FormingModel::place_tools(const FormingState& s) {
+  for (std::size_t t = 0; t < tools_.size(); ++t) tools_[t].set_offset(s.tool_offset[t]);
+}
+
+void FormingModel::freeze_material(const FormingState& s, double dt_predicted) {
+  constexpr double kTheta = 0.5;  // midpoint hardening, as the axisymmetric model
+  const int ne = num_elements(), fp = flow_points_, nt = thickness_points();
+  sigma_y_.resize(static_cast<std::size_t>(ne * fp));
+  hardening_viscosity_.resize(sigma_y_.size());
+  shear_viscosity_.assign(ne, 0.0);
+  for (std::size_t k = 0; k < sigma_y_.size(); ++k) {
+    sigma_y_[k] = hardening_.flow_stress(s.eps_bar[k]);
+    hardening_viscosity_[k] = kTheta * hardening_.slope(s.eps_bar[k]) * dt_predicted;
+  }
+  // Transverse-shear penalty: the viscosity of the element's centre, mid-thickness point at the
+  // nominal rate (numerics.md 3.4).
+  const int centre = (shell9_inplane_points(rule_) / 2) * nt + nt / 2;
+  for (int e = 0; e < ne; ++e) {
+    const double sy = sigma_y_[static_cast<std::size_t>(e * fp + centre)];
+    shear_viscosity_[e] = law_.is_constant()
+                              ? law_.constant_mu()
+                              : law_.effective_stress(sy, nominal_rate_) / (3.0 * nominal_rate_);
+  }
+}
+
+FormingModel::ToolProjection FormingModel::project(int tool, const Vec3& x, double h,
+                                                   bool axis_node) const {
+  const double r = axis_node ? 0.0 : std::hypot(x.x(), x.y());
+  const ClosestPoint c = tools_[tool].closest(Eigen::Vector2d(r, x.z()));
+  ToolProjection p;
+  p.gap = c.distance - 0.5 * h;
+  const Eigen::Vector2d on = c.point + 0.5 * h * c.normal;
+  if (axis_node || r == 0.0) {
+    // On the axis the normal is vertical by symmetry and the node stays on the axis.
+    p.normal = Vec3(0.0, 0.0, c.normal.y() >= 0.0 ? 1.0 : -1.0);
+    p.surface_point = Vec3(0.0, 0.0, c.point.y() + 0.5 * h * p.normal.z());
+    return p;
+  }
+  const Vec3 er(x.x() / r, x.y() / r, 0.0);
+  p.normal = c.normal.x() * er + c.normal.y() * Vec3::UnitZ();
+  p.surface_point = on.x() * er + on.y() * Vec3::UnitZ();
+  return p;
+}
+
+void FormingModel::prepare(const FormingState& s) {
+  const int nn = num_nodes();
+  frame_.resize(nn);
+  v1_.resize(nn);
+  v2_.resize(nn);
+  mask_.assign(num_dofs(), 0);
+  value_.assign(num_dofs(), 0.0);
+  auto fix = [&](int node, int k, double v) {
+    mask_[model_->dof(node, k)] = 1;
+    value_[model_->dof(node, k)] = v;
+  };
+  for (int i = 0; i < nn; ++i) {
+    const Vec3& x = s.x[i];
+    Mat3 Q = Mat3::Identity();
+    Vec3 hint = Vec3::UnitX();
+    if (!axis_[i]) {
+      const double r = std::hypot(x.x(), x.y());
+      const Vec3 er(x.x() / r, x.y() / r, 0.0), et(-x.y() / r, x.x() / r, 0.0);
+      const Vec3 n = s.contact[i].tool >= 0 ? s.contact[i].normal : Vec3::UnitZ();
+      const double nr = n.dot(er), nz = n.z();
+      Q.col(0) = et;
+      Q.col(1) = nz * er - nr * Vec3::UnitZ();
+      Q.col(2) = n;
+      hint = et;
+    }
+    frame_[i] = Q;
+    const Vec3& d = s.director[i];
+    v1_[i] = (hint - hint.dot(d) * d).normalized();
+    v2_[i] = d.cross(v1_[i]);
+    if (axis_[i]) {
+      for (int k : {0, 1, 3, 4}) fix(i, k, 0.0);
+    } else if (sym_[i]) {
+      fix(i, 0, 0.0);
+      fix(i, 4, 0.0);
+    }
+    const NodeContact3& c = s.contact[i];
+    if (c.tool >= 0) {
+      const RigidTool& tool = tools_[c.tool];
+      const Vec3 w(0.0, 0.0, tool.velocity().y());
+      fix(i, 2, w.dot(Q.col(2)));
+      if (tool.sticking()) {
+        if (!mask_[model_->dof(i, 0)]) fix(i, 0, w.dot(Q.col(0)));
+        if (!mask_[model_->dof(i, 1)]) fix(i, 1, w.dot(Q.col(1)));
+      }
+    }
+    if (!eligible_[i]) {
+      const int last = scene_.blank.edge == EdgeCondition::kClamped ? 5 : 3;
+      for (int k = 0; k < last; ++k) fix(i, k, 0.0);
+    }
+  }
+}
+
+Eigen::VectorXd FormingModel::to_local(const std::vector<Vec3>& velocity,
+                                       const std::vector<Vec3>& omega) const {
+  Eigen::VectorXd x(num_dofs());
+  for (int i = 0; i < num_nodes(); ++i) {
+    const Vec3 u = frame_[i].transpose() * velocity[i];
+    for (int k = 0; k < 3; ++k) x(model_->dof(i, k)) = u(k);
+    x(model_->dof(i, 3)) = omega[i].dot(v1_[i]);
+    x(model_->dof(i, 4)) = omega[i].dot(v2_[i]);
+  }
+  return x;
+}
+
+void FormingModel::to_global(const Eigen::VectorXd& x, std::vector<Vec3>* velocity,
+                             std::vector<Vec3>* omega) const {
+  velocity->resize(num_nodes());
+  omega->resize(num_nodes());
+  for (int i = 0; i < num_nodes(); ++i) {
+    const int d = model_->dof(i, 0);
+    (*velocity)[i] = frame_[i] * x.segment<3>(d);
+    (*omega)[i] = x(d + 3) * v1_[i] + x(d + 4) * v2_[i];
+  }
+}
+
+Shell9Geometry FormingModel::geometry(const FormingState& s, int e) const {
+  Shell9Geometry g;
+  const auto& conn = mesh_.elements[e];
+  for (int a = 0; a < 9; ++a) {
+    const int i = conn[a];
+    g.x[a] = s.x[i];
+    g.director[a] = s.director[i];
+    g.thickness[a] = s.thickness[i];
+    g.rot_map[a] = rot_map_5dof(v1_[i], v2_[i]);
+    g.n_rot[a] = 2;
+  }
+  return g;
+}
+
+std::vector<double> FormingModel::lumped_areas(const std::vector<Vec3>& x) const {
+  std::vector<double> area(x.size(), 0.0);
+  const Rule1D q = gauss_legendre(3);
+  for (const auto& el : mesh_.elements) {
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        const Shape9 sh = lagrange9(q.x[i], q.x[j]);
+        Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
+        for (int a = 0; a < 9; ++a) {
+          gr += sh.dr(a) * x[el[a]];
+          gs += sh.ds(a) * x[el[a]];
+        }
+        const double dA = gr.cross(gs).norm() * q.w[i] * q.w[j];
+        for (int a = 0; a < 9; ++a) area[el[a]] += sh.N(a) * dA;
+      }
+  }
+  return area;
+}
+
+std::vector<double> FormingModel::area_stretch(const std::vector<Vec3>& x) const {
+  const int nn = num_nodes();
+  std::vector<double> sum(nn, 0.0);
+  std::vector<int> count(nn, 0);
+  for (const auto& el : mesh_.elements) {
+    for (int a = 0; a < 9; ++a) {
+      const auto rs = lagrange9_node(a);
+      const Shape9 sh = lagrange9(rs[0], rs[1]);
+      Vec3 gr = Vec3::Zero(), gs = Vec3::Zero(), gr0 = Vec3::Zero(), gs0 = Vec3::Zero();
+      for (int b = 0; b < 9; ++b) {
+        gr += sh.dr(b) * x[el[b]];
+        gs += sh.ds(b) * x[el[b]];
+        gr0 += sh.dr(b) * mesh_.nodes[el[b]];
+        gs0 += sh.ds(b) * mesh_.nodes[el[b]];
+      }
+      sum[el[a]] += gr.cross(gs).norm() / gr0.cross(gs0).norm();
+      ++count[el[a]];
+    }
+  }
+  for (int i = 0; i < nn; ++i) sum[i] /= count[i];
+  return sum;
+}
+
+void FormingModel::element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe,
+                                  Shell9Stiffness kind, double theta,
+                                  ElementContribution* c) const {
+  const Shell9Geometry g = geometry(s, e);
+  const auto& conn = mesh_.elements[e];
+  // Element dofs are 5 per node: rotate the velocities of each node to global axes.
+  Eigen::VectorXd q = qe;
+  for (int a = 0; a < 9; ++a) q.segment<3>(5 * a) = frame_[conn[a]] * qe.segment<3>(5 * a);
+  const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
+  const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
+  const Shell9State st{sigma_y_.data() + fp, hardening_viscosity_.data() + fp};
+  Shell9Output out;
+  shell9_evaluate(g, rule_, thick_, mat, st, q, kind, &out, theta);
+  for (int a = 0; a < 9; ++a) {
+    const Mat3& Q = frame_[conn[a]];
+    out.force.segment<3>(5 * a) = Q.transpose() * out.force.segment<3>(5 * a);
+  }
+  if (kind != Shell9Stiffness::kNone) {
+    // K_local = T^T K T with T = diag(Q_a, I2): rotate the 3 velocity rows and columns of every
+    // node (coefficient loops: the blocked product kernel is slow for 3 x 45 blocks).
+    Eigen::MatrixXd& K = out.stiffness;
+    const Eigen::Index n = K.cols();
+    for (int a = 0; a < 9; ++a) {
+      const Mat3 Qt = frame_[conn[a]].transpose();
+      for (Eigen::Index j = 0; j < n; ++j) {
+        const Vec3 v(K(5 * a, j), K(5 * a + 1, j), K(5 * a + 2, j));
+        const Vec3 w = Qt * v;
+        for (int k = 0; k < 3; ++k) K(5 * a + k, j) = w(k);
+      }
+    }
+    for (int a = 0; a < 9; ++a) {
+      const Mat3& Q = frame_[conn[a]];
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::RowVector3d v(K(i, 5 * a), K(i, 5 * a + 1), K(i, 5 * a + 2));
+        const Eigen::RowVector3d w = v * Q;
+        for (int k = 0; k < 3; ++k) K(i, 5 * a + k) = w(k);
+      }
+    }
+  }
+  c->force = std::move(out.force);
+  c->stiffness = std::move(out.stiffness);
+  c->potential = out.potential;
+}
+
+void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix,
+                            double theta, Shell9Stiffness kind, FormingSystem* out) {
+  SparseMatrix& K = assembler_->matrix();
+  const double v0 = friction_velocity_;
+  for (int i = 0; i < num_nodes(); ++i) {
+    const NodeContact3& c = s.contact[i];
+    if (c.tool < 0) continue;
+    const RigidTool& tool = tools_[c.tool];
+    if (tool.sticking() || tool.friction() == 0.0) continue;
+    const Mat3& Q = frame_[i];
+    const Vec3 w(0.0, 0.0, tool.velocity().y());
+    const int d = model_->dof(i, 0);
+    const Eigen::Vector2d slip(x(d) - w.dot(Q.col(0)), x(d + 1) - w.dot(Q.col(1)));
+    const double limit = tool.friction() * std::max(c.normal_force_N, 0.0);
+    const double v = slip.norm(), a = v / v0, at = std::atan(a);
+    const double f = limit * kTwoOverPi * at;
+    const double ks = a < 1e-8 ? limit * kTwoOverPi / v0 : f / v;
+    const double kt = limit * kTwoOverPi / (v0 * (1.0 + a * a));
+    out->residual.segment<2>(d) += ks * slip;
+    out->potential += limit * kTwoOverPi * (v * at - 0.5 * v0 * std::log1p(a * a));
+    if (!want_matrix) continue;
+    Eigen::Matrix2d k2 = ks * Eigen::Matrix2d::Identity();
+    if (kind == Shell9Stiffness::kTangent && v > 0.0) {
+      const Eigen::Vector2d e = slip / v;
+      k2 += theta * (kt - ks) * e * e.transpose();
+    }
+    for (int p = 0; p < 2; ++p)
+      for (int q = 0; q < 2; ++q) K.coeffRef(d + p, d + q) += k2(p, q);
+  }
+}
+
+void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind,
+                            double theta, FormingSystem* out) {
+  const bool want = kind != Shell9Stiffness::kNone;
+  const ElementKernel kernel = [&](int e, const Eigen::VectorXd& qe, ElementContribution* c) {
+    element_kernel(s, e, qe, kind, theta, c);
+  };
+  out->potential = assembler_->assemble(kernel, x, want, &out->internal_force);
+  out->residual = out->internal_force;
+  friction(s, x, want, theta, kind, out);
+  for (int k = 0; k < num_dofs(); ++k)
+    if (mask_[k]) out->residual(k) = 0.0;
+  if (want) {
+    Eigen::VectorXd dummy = Eigen::VectorXd::Zero(num_dofs());
+    const std::vector<double> zero(static_cast<std::size_t>(num_dofs()), 0.0);
+    assembler_->apply_constraints(mask_, zero, &dummy);
+  }
+}
+
+double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) {
+  FormingSystem sys;
+  evaluate(s, x, Shell9Stiffness::kNone, 0.0, &sys);
+  return sys.potential;
+}
+
+void FormingModel::point_rates(const FormingState& s, const Eigen::VectorXd& x,
+                               std::vector<std::vector<double>>* rates) const {
+  const int ne = num_elements();
+  rates->assign(ne, {});
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int e = 0; e < ne; ++e) {
+    const Shell9Geometry g = geometry(s, e);
+    const auto& conn = mesh_.elements[e];
+    Eigen::VectorXd q = assembler_->gather(e, x);
+    for (int a = 0; a < 9; ++a) q.segment<3>(5 * a) = frame_[conn[a]] * q.segment<3>(5 * a);
+    const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
+    const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
+    const Shell9State st{sigma_y_.data() + fp, hardening_viscosity_.data() + fp};
+    Shell9Output out;
+    shell9_evaluate(g, rule_, thick_, mat, st, q, Shell9Stiffness::kNone, &out);
+    (*rates)[e] = std::move(out.point_rate);
+  }
+}
+
+}  // namespace vs::shell3d

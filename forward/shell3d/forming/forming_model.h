@@ -1,0 +1,179 @@
+// The 3D viscous-shell forming model (paper section 6): a quarter blank of 9-node shells in
+// updated coordinates, the analytic axisymmetric tools of forward/contact, the shared viscous
+// material, and the evaluation of residual, stiffness and flow potential for a velocity field
+// with every node's translational unknowns in its own nodal frame (paper section 6.7).
+//
+// Unknowns per node (5, numbered by ShellModel): u_local = Q^T u (3 velocities in the nodal frame
+// Q = [a1, a2, a3]) and the rates about the director axes V1, V2 (shell9_kinematics.h). The nodal
+// frame is cylindrical, because every tool is axisymmetric about z:
+//   a1 = e_theta (circumferential), a3 = tool normal n (e_z for a free node), a2 = a3 x ... the
+//   meridional tangent n_z e_r - n_r e_z (e_r for a free node);
+// at a node on the axis Q = I (its in-plane velocities are fixed by symmetry and its contact
+// normal is e_z). Then
+//   - a symmetry plane x = 0 or y = 0 (normal e_theta there) is "u_local 0 = 0" and, with the
+//     director frame V1 = e_theta projected on the tangent plane, "rate about V2 = 0";
+//   - contact with a tool of velocity w is "u_local 2 = w . n" (one dof; the 3x3 block rotation
+//     keeps the sparsity pattern), sticking adds u_local 0, 1 = w . a1, w . a2;
+//   - Coulomb friction (regularised like the axisymmetric model: |f| = mu N 2/pi atan(|s|/v0)
+//     along the relative slip s in the (a1, a2) plane) uses the normal reaction N lagged by one
+//     iteration (FormingStepProblem).
+// The thickness is nodal, from exact conservation of each node's lumped volume h0 A0_i = h A_i
+// with A_i = integral of N_i over the current mid-surface (the 3D analogue of the axisymmetric
+// element volume / area).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/rigid_tool.h"
+#include "material/hardening.h"
+#include "material/viscous_law.h"
+#include "scene/scene.h"
+#include "shell3d/assembler.h"
+#include "shell3d/hill_plane_stress.h"
+#include "shell3d/shell9.h"
+#include "shell3d/shell_model.h"
+
+namespace vs::shell3d {
+
+struct NodeContact3 {
+  int tool = -1;                // index into tools, -1 = free
+  Vec3 normal = Vec3::UnitZ();  // from the tool into the sheet
+  double normal_force_N = 0.0;  // lagged normal reaction of this node (quarter model)
+};
+
+// Everything that changes from step to step.
+struct FormingState {
+  double time_s = 0.0;
+  std::vector<Vec3> x;                       // mid-surface nodes [mm]
+  std::vector<Vec3> director;                // unit directors V3
+  std::vector<double> thickness;             // per node [mm]
+  std::vector<double> eps_bar;               // per element and flow point
+  std::vector<Eigen::Vector2d> tool_offset;  // per tool, (r, z) rigid displacement [mm]
+  std::vector<NodeContact3> contact;         // per node
+  std::vector<Vec3> velocity;                // last converged nodal velocity (global) [mm/s]
+  std::vector<Vec3> omega;                   // last converged director angular velocity [1/s]
+};
+
+// One evaluation in the nodal frames; the matrix lives in the model's assembler.
+struct FormingSystem {
+  Eigen::VectorXd residual;        // local frames; zero at prescribed dofs
+  Eigen::VectorXd internal_force;  // element forces, local frames (reactions at contact nodes)
+  double potential = 0.0;          // flow potential incl. friction (line-search merit)
+};
+
+class FormingModel {
+ public:
+  explicit FormingModel(const Scene& scene);
+  FormingModel(const FormingModel&) = delete;
+  FormingModel& operator=(const FormingModel&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const ShellMesh& mesh() const { return mesh_; }
+  const ShellModel& shell_model() const { return *model_; }
+  int num_nodes() const { return mesh_.num_nodes(); }
+  int num_elements() const { return mesh_.num_elements(); }
+  int num_dofs() const { return model_->num_dofs(); }
+  int flow_points() const { return flow_points_; }  // per element
+  int thickness_points() const { return static_cast<int>(thick_.zeta.size()); }
+  const std::vector<RigidTool>& tools() const { return tools_; }
+  int punch_index() const { return punch_; }
+  double nominal_rate() const { return nominal_rate_; }
+  // 4 for the quarter model: nodal reactions and forces are scaled by it for the whole blank.
+  double symmetry_factor() const { return 4.0; }
+  const Vec3& initial_position(int node) const { return mesh_.nodes[node]; }
+  double initial_thickness() const { return scene_.blank.thickness_mm; }
+  bool on_axis(int node) const { return axis_[node] != 0; }
+  // Nodes whose boundary condition (blank.edge) forbids contact (pinned / clamped edge).
+  bool contact_eligible(int node) const { return eligible_[node] != 0; }
+  // Mesh neighbours (nodes sharing an element), sorted.
+  const std::vector<int>& neighbours(int node) const { return neighbours_[node]; }
+
+  FormingState initial_state() const;
+  void place_tools(const FormingState& s);
+
+  // Per-step material data (as AxisymModel::freeze_material): yield stress and hardening
+  // viscosity theta H dt per flow point, shear penalty viscosity per element.
+  void freeze_material(const FormingState& s, double dt_predicted);
+  // Nodal frames, director frames and prescribed values of state s; call before evaluate().
+  void prepare(const FormingState& s);
+
+  // Translational frame Q of a node (global = Q local) and its director axes V1, V2.
+  const Mat3& frame(int node) const { return frame_[node]; }
+  const Vec3& v1(int node) const { return v1_[node]; }
+  const Vec3& v2(int node) const { return v2_[node]; }
+  const std::vector<char>& prescribed_mask() const { return mask_; }
+  const std::vector<double>& prescribed_value() const { return value_; }
+
+  // Local-frame vector <-> nodal global velocities and angular velocities.
+  Eigen::VectorXd to_local(const std::vector<Vec3>& velocity, const std::vector<Vec3>& omega) const;
+  void to_global(const Eigen::VectorXd& x, std::vector<Vec3>* velocity,
+                 std::vector<Vec3>* omega) const;
+
+  // Residual, potential and (kind != kNone) matrix at local velocities x. kTangent blends secant
+  // and tangent with theta. The matrix has prescribed rows and columns decoupled (diagonal kept).
+  void evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind, double theta,
+                FormingSystem* out);
+  double potential(const FormingState& s, const Eigen::VectorXd& x);
+  const SparseMatrix& matrix() const { return assembler_->matrix(); }
+
+  // Effective rate at every flow point (per element) at local velocities x.
+  void point_rates(const FormingState& s, const Eigen::VectorXd& x,
+                   std::vector<std::vector<double>>* rates) const;
+
+  // Element geometry of state s (directors, nodal thickness, director frames of prepare()).
+  Shell9Geometry geometry(const FormingState& s, int e) const;
+  // Lumped nodal mid-surface areas integral N_i dA of configuration x.
+  std::vector<double> lumped_areas(const std::vector<Vec3>& x) const;
+  // Nodal area stretch dA/dA0 of configuration x: at the node's own natural coordinates in every
+  // element that contains it (the mesh is material, so that is the same particle), averaged over
+  // those elements. Exact incompressibility of the interpolated mid-surface then gives the nodal
+  // thickness h = h0 / stretch. (The volume-lumped alternative h0 A0_i / A_i weights the
+  // point values by N_i, which is negative over parts of a 9-node element: measured on ex4a it
+  // makes the corner node on the axis thicken by 0.6 % where it should thin.)
+  std::vector<double> area_stretch(const std::vector<Vec3>& x) const;
+
+  // 3D closest point data of a node w.r.t. tool t: signed gap (minus h/2), normal, and the
+  // point on the mid-surface offset by h/2 from the tool surface.
+  struct ToolProjection {
+    double gap = 0.0;
+    Vec3 normal = Vec3::UnitZ();
+    Vec3 surface_point = Vec3::Zero();  // mid-surface position touching the tool
+  };
+  ToolProjection project(int tool, const Vec3& x, double h, bool axis_node) const;
+
+ private:
+  void element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe, Shell9Stiffness kind,
+                      double theta, ElementContribution* c) const;
+  void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
+                Shell9Stiffness kind, FormingSystem* out);
+
+  Scene scene_;
+  ShellMesh mesh_;
+  std::unique_ptr<ShellModel> model_;
+  std::unique_ptr<ShellAssembler> assembler_;
+  ThicknessRule thick_;
+  Shell9Rule rule_ = Shell9Rule::kMitc9;
+  int flow_points_ = 0;
+  Hardening hardening_;
+  ViscousLaw law_;
+  HillPlaneStressLaw hill_;
+  std::vector<RigidTool> tools_;
+  int punch_ = -1;
+  double nominal_rate_ = 1.0;
+  double friction_velocity_ = 1e-4;
+  std::vector<char> axis_, sym_, eligible_;
+  std::vector<std::vector<int>> neighbours_;
+  // Frozen per step.
+  std::vector<double> sigma_y_, hardening_viscosity_;  // per element * flow point
+  std::vector<double> shear_viscosity_;                // per element
+  // Per prepare().
+  std::vector<Mat3> frame_;
+  std::vector<Vec3> v1_, v2_;
+  std::vector<char> mask_;
+  std::vector<double> value_;
+};
+
+}  // namespace vs::shell3d

@@ -1,0 +1,53 @@
+// One forming step as a SparseNonlinearProblem: the model evaluated at a fixed state, the lagged
+// normal forces of Coulomb friction (relaxed per node like the axisymmetric AxisymStepProblem:
+// the factor halves when a node's change reverses sign and grows back while it keeps its sign),
+// and what the driver needs from a converged velocity field (reactions, punch force, rates).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "shell3d/forming/forming_model.h"
+#include "shell3d/forming/sparse_nonlinear.h"
+
+namespace vs::shell3d {
+
+class FormingStepProblem : public SparseNonlinearProblem {
+ public:
+  // model.prepare(*state) must have been called for this state.
+  FormingStepProblem(FormingModel& model, FormingState* state) : model_(model), state_(state) {}
+
+  double evaluate(const Eigen::VectorXd& x, double theta, Eigen::VectorXd* residual,
+                  double* potential) override;
+  const SparseMatrix& matrix() const override { return model_.matrix(); }
+  double potential(const Eigen::VectorXd& x) override { return model_.potential(*state_, x); }
+  bool update_lagged(const Eigen::VectorXd& x) override;
+
+  // Start vector: the state's last velocities in the current frames, prescribed values imposed.
+  Eigen::VectorXd start() const;
+  // Final evaluation at the converged x: reactions, punch force and flow-point rates.
+  void finish(const Eigen::VectorXd& x);
+
+  // Whole-blank punch force (+z on the sheet) [N] at the last finish().
+  double punch_force() const { return punch_force_; }
+  // Normal reaction of every node (compressive > 0, quarter model) at the last finish().
+  const std::vector<double>& normal_reactions() const { return normal_; }
+  // |reaction vector| of every contact node (0 elsewhere) at the last finish().
+  const std::vector<double>& reaction_magnitudes() const { return magnitude_; }
+  const std::vector<std::vector<double>>& point_rates() const { return rates_; }
+  double max_point_rate() const { return max_rate_; }
+
+ private:
+  void reactions(const Eigen::VectorXd& internal_force, std::vector<double>* normal,
+                 std::vector<double>* magnitude = nullptr) const;
+
+  FormingModel& model_;
+  FormingState* state_;
+  FormingSystem sys_;
+  double punch_force_ = 0.0, max_rate_ = 0.0;
+  std::vector<double> normal_, magnitude_;
+  std::vector<std::vector<double>> rates_;
+  std::vector<double> relax_, last_change_;
+};
+
+}  // namespace vs::shell3d

@@ -1,0 +1,45 @@
+// Nonlinear solve of one forming step on a sparse system: the sparse analogue of
+// forward/solver/nonlinear_solver.h (same options, summary and strategy, which that header
+// explains: direct (secant) iterations start each solve, then Newton with the tangent weight
+// theta adapted like a trust region and an Armijo line search on the convex flow potential; a
+// rejected step falls back to the always-SPD direct iteration). The matrix lives in the problem;
+// the CHOLMOD symbolic analysis is done once per solver object (the pattern never changes).
+// One difference: the full Newton step is tried with a complete evaluation (residual and matrix
+// for the next iteration's tangent weight) instead of a potential-only one, so an accepted full
+// step costs one assembly instead of two; backtracking uses potential-only evaluations.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "shell3d/sparse_solver.h"
+#include "solver/nonlinear_solver.h"
+
+namespace vs::shell3d {
+
+class SparseNonlinearProblem {
+ public:
+  virtual ~SparseNonlinearProblem() = default;
+  // Residual at free unknowns (zero at prescribed ones) and, in matrix(), secant + theta
+  // (tangent - secant) with prescribed rows and columns decoupled. Returns the residual scale
+  // (norm of the internal forces); *potential = flow potential at x.
+  virtual double evaluate(const Eigen::VectorXd& x, double theta, Eigen::VectorXd* residual,
+                          double* potential) = 0;
+  virtual const SparseMatrix& matrix() const = 0;
+  virtual double potential(const Eigen::VectorXd& x) = 0;
+  // After each accepted iterate: quantities lagged by one iteration (contact normal forces).
+  // Returns whether the system at a given x changed (an evaluation made before is stale).
+  virtual bool update_lagged(const Eigen::VectorXd& x) = 0;
+};
+
+struct SparseSolveTimings {
+  double assembly_s = 0.0;       // evaluate() and potential() calls
+  double factorisation_s = 0.0;  // symbolic analysis, numeric factorisation and triangular solves
+  int factorisations = 0;
+};
+
+// x: start (prescribed values already set); on return, the last iterate. Timings accumulate.
+NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
+                                        const NonlinearOptions& options, SparseSpdSolver* solver,
+                                        Eigen::VectorXd* x, SparseSolveTimings* timings);
+
+}  // namespace vs::shell3d

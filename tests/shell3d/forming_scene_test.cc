@@ -1,0 +1,112 @@
+// Scene integration of the 3D forming solver: geometry-specific keys, bundled scenes, dispatch.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/error.h"
+#include "run/simulate.h"
+#include "scene/load_scene.h"
+#include "shell3d/forming/forming_driver.h"
+#include "shell3d/forming/forming_mesh.h"
+
+namespace vs::shell3d {
+namespace {
+
+std::string scene_path(const std::string& name) {
+  return std::string(VS_SOURCE_DIR) + "/data/scenes/" + name;
+}
+
+std::string write_scene(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::temp_directory_path() / "vs_shell3d_scene_tests";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+const char* const kTools = R"(
+[[tool]]
+name = "punch"
+kind = "hemispherical_punch"
+radius_mm = 40.0
+)";
+
+std::string load_error(const std::string& name, const std::string& text) {
+  try {
+    load_scene(write_scene(name, text));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(FormingScene, BundledShellScenesLoad) {
+  const Scene a = load_scene(scene_path("ex4a_quarter_disc_sticking.toml"));
+  EXPECT_EQ(a.geometry, Geometry::kShell3d);
+  EXPECT_EQ(a.blank.shape, BlankShape::kCircle);
+  EXPECT_TRUE(a.tools.at(0).sticking());
+  const Scene b = load_scene(scene_path("ex4b_square_clamped.toml"));
+  EXPECT_EQ(b.blank.shape, BlankShape::kSquare);
+  EXPECT_EQ(b.blank.edge, EdgeCondition::kClamped);
+  // Example 4a has the data of example 1 (punch, sheet, material, travel).
+  const Scene ex1 = load_scene(scene_path("ex1_hemispherical_stretching.toml"));
+  EXPECT_EQ(a.blank.radius_mm, ex1.blank.radius_mm);
+  EXPECT_EQ(a.blank.thickness_mm, ex1.blank.thickness_mm);
+  EXPECT_EQ(a.tools.at(0).radius_mm, ex1.tools.at(0).radius_mm);
+  EXPECT_EQ(a.material.hardening.K_MPa, ex1.material.hardening.K_MPa);
+  EXPECT_EQ(a.process.punch_travel_mm, ex1.process.punch_travel_mm);
+}
+
+TEST(FormingScene, GeometrySpecificKeysAreRejectedInTheOtherGeometry) {
+  const std::string axi = load_error("axi.toml", "[blank]\ndivisions = 4\n" + std::string(kTools));
+  EXPECT_NE(axi.find("axi.toml:2:1: key 'blank.divisions' is only used by geometry = \"shell3d\""),
+            std::string::npos)
+      << axi;
+  const std::string rule =
+      load_error("rule.toml", "[numerics]\nelement_rule = \"mitc9\"\n" + std::string(kTools));
+  EXPECT_NE(rule.find("key 'numerics.element_rule' is only used by geometry = \"shell3d\""),
+            std::string::npos)
+      << rule;
+  const std::string shell = load_error(
+      "shell.toml", "geometry = \"shell3d\"\n[blank]\nelements = 20\n" + std::string(kTools));
+  EXPECT_NE(shell.find("shell.toml:3:1: key 'blank.elements' is only used by geometry = "
+                       "\"axisymmetric\""),
+            std::string::npos)
+      << shell;
+  // Without geometry-specific keys both load.
+  EXPECT_EQ(load_error("ok.toml", std::string("geometry = \"shell3d\"\n") + kTools), "");
+  EXPECT_EQ(load_error("ok2.toml", std::string(kTools)), "");
+}
+
+TEST(FormingScene, SolversRefuseTheOtherGeometry) {
+  Scene s = load_scene(scene_path("ex4a_quarter_disc_sticking.toml"));
+  EXPECT_THROW(simulate(s), InputError);
+  const Scene axi = load_scene(scene_path("ex1_hemispherical_stretching.toml"));
+  EXPECT_THROW(simulate_shell3d(axi), InputError);
+  const std::string holder =
+      load_error("holder.toml", std::string("geometry = \"shell3d\"\n") + kTools +
+                                    "[[tool]]\nname = \"die\"\nkind = \"die\"\nradius_mm = 42.0\n"
+                                    "profile_radius_mm = 4.0\n[[tool]]\nname = \"holder\"\n"
+                                    "kind = \"blank_holder\"\nforce_N = 1000.0\n");
+  EXPECT_NE(holder.find("has no blank holder yet"), std::string::npos) << holder;
+}
+
+TEST(FormingScene, MeshesHaveTheSymmetryAndEdgeSets) {
+  Scene s = load_scene(scene_path("ex4a_quarter_disc_sticking.toml"));
+  s.blank.divisions = 3;
+  const ShellMesh disc = forming_mesh(s);
+  EXPECT_EQ(disc.num_elements(), 27);
+  EXPECT_EQ(disc.set("x0").size(), 13u);  // 2 n elements along each symmetry line, 9-node
+  EXPECT_EQ(disc.set("diagonal").size(), 13u);
+  EXPECT_EQ(disc.set("edge").size(), disc.set("rim").size());
+  s.blank.shape = BlankShape::kSquare;
+  const ShellMesh square = forming_mesh(s);
+  EXPECT_EQ(square.num_elements(), 9);
+  EXPECT_EQ(square.set("edge").size(), 13u);  // two edges of 7 nodes sharing the corner
+  EXPECT_EQ(square.set("diagonal").size(), 7u);
+}
+
+}  // namespace
+}  // namespace vs::shell3d
