@@ -85,7 +85,7 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
   }
   for (const char* v : quick ? std::vector<const char*>{"2"}
                              : std::vector<const char*>{"2", "1", "0.5", "0.125"}) {
-    s.push_back({"travel cap", v, {{"numerics.max_travel_increment_mm", v}}});
+    s.push_back({"travel cap", v, {{"numerics.max_travel_increment_mm", v}, {"numerics.max_travel_increment_per_length", "1e9"}}});
   }
   for (const char* v : quick ? std::vector<const char*>{"0.08"}
                              : std::vector<const char*>{"0.08", "0.04", "0.01", "0.005"}) {
@@ -106,6 +106,7 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
   s.push_back({"time integration", "euler", {{"numerics.time_integration", "euler"}}});
   const Overrides coarse{{"blank.elements", el(0.5)},
                          {"numerics.max_travel_increment_mm", "2"},
+                         {"numerics.max_travel_increment_per_length", "1e9"},
                          {"numerics.max_strain_increment", "0.08"},
                          {"numerics.thickness_points", "3"},
                          {"numerics.tolerance", "1e-3"}};
@@ -126,6 +127,7 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
                  fmt::format("L{}", k),
                  {{"blank.elements", std::to_string(n0 << k)},
                   {"numerics.max_travel_increment_mm", fmt::format("{}", 0.1 / f)},
+                  {"numerics.max_travel_increment_per_length", "1e9"},
                   {"numerics.max_strain_increment", fmt::format("{}", 0.02 / f)},
                   {"numerics.thickness_points", "9"},
                   {"numerics.tolerance", "1e-8"}}});

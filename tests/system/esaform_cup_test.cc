@@ -26,4 +26,13 @@ TEST(EsaformCup, DrawsCompletelyAndPredictsTheMeasuredHeight) {
   EXPECT_NEAR(cup.height_end_mm, cup.height_mm, 1.0);
 }
 
+TEST(EsaformCup, FixedGapHolderDrawsCompletely) {
+  // The benchmark's holder: a rigid face 1.04 mm below the die face.
+  const vs::Scene scene = vsx::make_cup_scene(VS_SOURCE_DIR, {}, "ex3_flat_punch_cup_fixed_gap");
+  const vs::RunResult result = vs::simulate(scene);
+  const vsx::CupHeight cup = vsx::evaluate_cup(result, vsx::cup_geometry(scene));
+  ASSERT_TRUE(cup.drawn) << "rim still at r = " << cup.rim_r_mm << " mm; " << result.message;
+  EXPECT_NEAR(cup.height_mm, 34.15, 0.10 * 34.15);
+}
+
 }  // namespace
