@@ -1,8 +1,9 @@
 // Issue 2 performance benchmark: example 1 (hemispherical stretching, friction 0.04) to full
 // travel at 12, 24, 48 and 69 elements (69 is the finest mesh whose elements are not shorter than
-// the 0.85 mm thickness; finer meshes are outside the thin-shell model), single thread. Reports the median wall time, steps,
-// iterations, peak load and the final pole thickness strain, their deviation from the finest mesh,
-// and which mesh is within 1% of the finest against the 50 ms goal.
+// the 0.85 mm thickness; finer meshes are outside the thin-shell model), single thread. Reports the
+// median wall and thread CPU time, steps, iterations, peak load and the final pole thickness
+// strain, their deviation from the finest mesh, and which mesh is within 1% of the finest against
+// the 50 ms goal on one core (thread CPU time).
 //
 //   build-exp/experiments/performance_benchmark [--quick] [--out DIR]
 #include <fmt/format.h>
@@ -138,13 +139,15 @@ int main(int argc, char** argv) {
   }
   if (chosen >= 0) {
     const Row& c = rows[static_cast<std::size_t>(chosen)];
+    // The goal is for one core: thread CPU time, which the wall time equals on an idle core (the
+    // machine is shared, so the wall time includes waiting for a core).
     md += fmt::format(
         "**Goal check:** the coarsest mesh within 1% of the finest ({} elements) in both peak load "
-        "and pole thickness strain is **{} elements**, which runs to full travel in **{} ms** "
-        "against the 50 ms goal ({}: {:.1f}x the goal; thread CPU time {} ms).\n",
-        fine.elements, c.elements, ms(c.run.wall_s),
-        c.run.wall_s <= kGoalS ? "goal met" : "goal missed", c.run.wall_s / kGoalS,
-        ms(c.run.cpu_s));
+        "and pole thickness strain is **{} elements**, which runs to full travel in **{} ms** of "
+        "thread CPU time against the 50 ms goal on one core ({}: {:.2f}x the goal; wall time {} ms "
+        "on the shared machine).\n",
+        fine.elements, c.elements, ms(c.run.cpu_s),
+        c.run.cpu_s <= kGoalS ? "goal met" : "goal missed", c.run.cpu_s / kGoalS, ms(c.run.wall_s));
   } else {
     md += "**Goal check:** no coarser mesh is within 1% of the finest in both quantities.\n";
   }
@@ -156,10 +159,10 @@ int main(int argc, char** argv) {
   write_text(args.out_dir + "/summary.md", md);
 
   vs::SvgFigure fig;
-  fig.title = "ex1 benchmark: wall time and deviation from the finest mesh";
+  fig.title = "ex1 benchmark: CPU time and deviation from the finest mesh";
   fig.x_label = "log10(elements)";
   fig.y_label = "log10(value)";
-  vs::PlotSeries time{"wall time [s]", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+  vs::PlotSeries time{"thread CPU time [s]", {}, {}, vs::SeriesStyle::kLineAndMarkers};
   vs::PlotSeries dpk{"|peak load deviation|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
   vs::PlotSeries dpo{"|pole eps_t deviation|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
   vs::PlotSeries goal{"50 ms goal", {}, {}, vs::SeriesStyle::kLine};
@@ -167,7 +170,7 @@ int main(int argc, char** argv) {
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const double x = std::log10(rows[i].elements);
     time.x.push_back(x);
-    time.y.push_back(std::log10(rows[i].run.wall_s));
+    time.y.push_back(std::log10(rows[i].run.cpu_s));
     goal.x.push_back(x);
     goal.y.push_back(std::log10(kGoalS));
     if (i + 1 < rows.size()) {

@@ -37,6 +37,8 @@ struct Axisym2Geometry {
 
 // B: generalised strain rates (eps_s, eps_t, kappa_s, kappa_t, gamma) = B * (ua wa ba ub wb bb).
 Mat56 axisym2_B(const Axisym2Geometry& g);
+// B d, written out.
+Vec5 axisym2_strain_rates(const Axisym2Geometry& g, const Vec6& d);
 
 struct Axisym2Section {
   double thickness_mm = 1.0;
@@ -45,24 +47,36 @@ struct Axisym2Section {
   // null = none.
   const std::vector<double>* hardening_viscosity = nullptr;
   double shear_viscosity = 1.0;  // penalty viscosity for transverse shear
+  // kTangent, optional: a flow direction n per point (2 each) that the rank-one part of the
+  // tangent uses instead of the current one (primal-dual Newton, material/flow_direction.h);
+  // null: the current one (the consistent tangent).
+  const double* flow_direction = nullptr;
 };
 
 enum class StiffnessKind { kSecant, kTangent, kNone };
 
 struct Axisym2Output {
-  Vec6 force = Vec6::Zero();        // internal nodal forces (full 360 degrees) [N]
-  Mat6 stiffness = Mat6::Zero();    // secant or tangent [N s/mm]
-  double potential = 0.0;           // integral of phi over the volume [N mm/s]; only with kNone
-  Vec5 strain_rate = Vec5::Zero();  // generalised strain rates
+  Vec6 force = Vec6::Zero();      // internal nodal forces (full 360 degrees) [N]
+  Mat6 stiffness = Mat6::Zero();  // secant or tangent [N s/mm]
+  // kTangent with split only: the tangent's rank-one part T, stiffness = secant + weight * T.
+  Mat6 tangent_part = Mat6::Zero();
+  double potential = 0.0;  // integral of phi over the volume [N mm/s]; with kNone and kTangent
+  Vec5 strain_rate = Vec5::Zero();       // generalised strain rates
   Vec5 stress_resultant = Vec5::Zero();  // N_s, N_t [N/mm]; M_s, M_t [N]; Q [N/mm]
-  std::vector<double> point_rate;        // effective strain rate at each thickness point
+  std::vector<double> point_rate;        // kNone: effective strain rate at each thickness point
+  // kTangent: flow direction m = A d / (3 eh) (2 per point) and cut-off rate eh at each point.
+  std::vector<double> point_direction;
+  std::vector<double> point_cutoff_rate;
 };
 
 // Evaluates the element at nodal velocities d. `rule` and `section.sigma_y` have equal size.
 // With kTangent, `tangent_weight` in [0, 1] blends secant (0) and consistent tangent (1); the
-// nonlinear solver adapts it like a trust region.
+// nonlinear solver adapts it like a trust region. `split`: also return the tangent's rank-one
+// part separately (Axisym2Output::tangent_part, one more matrix product); without it only the
+// blended stiffness.
 void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
                       const ThicknessRule& rule, const ViscousLaw& law, const Vec6& d,
-                      StiffnessKind kind, Axisym2Output* out, double tangent_weight = 1.0);
+                      StiffnessKind kind, Axisym2Output* out, double tangent_weight = 1.0,
+                      bool split = true);
 
 }  // namespace vs

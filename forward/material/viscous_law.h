@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "scene/scene.h"
 
@@ -47,6 +48,19 @@ class ViscousLaw {
   Point evaluate(double sigma_y, double hardening_viscosity, const Eigen::Vector2d& d,
                  bool want_potential = true) const;
 
+  // The scalar part of evaluate() at effective rate e = sqrt(e_squared): secant viscosity, tangent
+  // coefficient and (if asked) potential. It needs e only squared (the cut-off rate is
+  // sqrt(e^2 + e_c^2)), which keeps a square root off the critical path. Inline (defined below):
+  // elements call it at every thickness point.
+  struct Scalars {
+    double mu = 0.0;
+    double tangent_coef = 0.0;
+    double potential = 0.0;
+    double cutoff_rate = 0.0;  // eh = sqrt(e^2 + e_c^2) (0 for a constant viscosity)
+  };
+  Scalars scalars(double sigma_y, double hardening_viscosity, double e_squared,
+                  bool want_potential) const;
+
   // Effective stress at effective rate e (>= 0), smooth cut-off applied.
   double effective_stress(double sigma_y, double e, double hardening_viscosity = 0.0) const;
   // Effective rate e of an in-plane rate vector.
@@ -70,5 +84,82 @@ class ViscousLaw {
   double constant_mu_ = 0.0;
   Eigen::Matrix2d A_ = Eigen::Matrix2d::Zero();
 };
+
+// ---- inline definitions (hot path of every element evaluation) ----
+
+inline double ViscousLaw::flow(double sigma_y, double hv, double e) const {
+  double s = sigma_y;
+  switch (rate_.law) {
+    case RateLaw::kNone:
+      break;
+    case RateLaw::kPerzyna:
+      // Paper eq. (7) solved for the stress: e = gamma (sigma_bar - sigma_y)^exponent.
+      s += std::pow(e / rate_.gamma_per_s, 1.0 / rate_.exponent);
+      break;
+    case RateLaw::kPower:
+      s *= std::pow(e / rate_.reference_rate_per_s, rate_.m);
+      break;
+  }
+  return s + hv * e;
+}
+
+inline double ViscousLaw::flow_slope(double sigma_y, double hv, double e) const {
+  double d = hv;
+  switch (rate_.law) {
+    case RateLaw::kNone:
+      break;
+    case RateLaw::kPerzyna:
+      d += std::pow(e / rate_.gamma_per_s, 1.0 / rate_.exponent) / (rate_.exponent * e);
+      break;
+    case RateLaw::kPower:
+      d += rate_.m * sigma_y * std::pow(e / rate_.reference_rate_per_s, rate_.m) / e;
+      break;
+  }
+  return d;
+}
+
+inline double ViscousLaw::antiderivative(double sigma_y, double hv, double e) const {
+  double F = 0.5 * hv * e * e;
+  switch (rate_.law) {
+    case RateLaw::kNone:
+      F += sigma_y * e;
+      break;
+    case RateLaw::kPerzyna: {
+      const double q = 1.0 / rate_.exponent + 1.0;
+      F += sigma_y * e + rate_.gamma_per_s * std::pow(e / rate_.gamma_per_s, q) / q;
+      break;
+    }
+    case RateLaw::kPower: {
+      const double q = rate_.m + 1.0;
+      F += sigma_y * rate_.reference_rate_per_s * std::pow(e / rate_.reference_rate_per_s, q) / q;
+      break;
+    }
+  }
+  return F;
+}
+
+inline ViscousLaw::Scalars ViscousLaw::scalars(double sigma_y, double hardening_viscosity,
+                                               double e_squared, bool want_potential) const {
+  Scalars p;
+  if (is_constant()) {
+    p.mu = constant_mu_;
+    if (want_potential) p.potential = 1.5 * constant_mu_ * e_squared;
+    return p;
+  }
+  // Smooth cut-off: the flow law is evaluated at eh = sqrt(e^2 + e_c^2) and scaled by e/eh, so
+  // mu = f(eh) / (3 eh), the potential is F(eh) - F(e_c) (F' = f) and the tangent coefficient
+  // (f'(eh) eh - f(eh)) / (9 eh^3) is smooth through e = 0.
+  const double hv = hardening_viscosity;
+  const double eh = std::sqrt(e_squared + cutoff_ * cutoff_);
+  const double inv = 1.0 / eh;  // one division for both coefficients
+  p.cutoff_rate = eh;
+  const double f = flow(sigma_y, hv, eh);
+  p.mu = (1.0 / 3.0) * f * inv;
+  p.tangent_coef = (1.0 / 9.0) * (flow_slope(sigma_y, hv, eh) * eh - f) * (inv * inv * inv);
+  if (want_potential) {
+    p.potential = antiderivative(sigma_y, hv, eh) - antiderivative(sigma_y, hv, cutoff_);
+  }
+  return p;
+}
 
 }  // namespace vs

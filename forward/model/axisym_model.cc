@@ -1,5 +1,7 @@
 #include "model/axisym_model.h"
 
+#include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -142,10 +144,16 @@ Eigen::VectorXd AxisymModel::to_local(const AxisymState& s, const Eigen::VectorX
 
 Eigen::VectorXd AxisymModel::to_global(const AxisymState& s, const Eigen::VectorXd& v) const {
   Eigen::VectorXd out = v;
-  for (int i = 0; i < num_nodes(); ++i) {
-    if (s.contact[i].tool >= 0) out.segment<3>(3 * i) = frame(s, i) * v.segment<3>(3 * i);
-  }
+  rotate_to_global(s, &out);
   return out;
+}
+
+void AxisymModel::rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const {
+  for (int i = 0; i < num_nodes(); ++i) {
+    if (s.contact[i].tool < 0) continue;
+    const Eigen::Vector3d local = v->segment<3>(3 * i);
+    v->segment<3>(3 * i) = frame(s, i) * local;
+  }
 }
 
 void AxisymModel::prescribed(const AxisymState& s, std::vector<char>* mask,
@@ -262,48 +270,156 @@ void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, 
 
 void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
                            AxisymSystem* out, double tangent_weight) const {
-  const int nn = num_nodes();
-  const Eigen::VectorXd v = to_global(s, v_local);
-  const bool want_k = kind != StiffnessKind::kNone;
-  if (want_k) {
-    if (out->K.blocks() != nn) out->K.resize(nn);
-    out->K.set_zero();
-  }
-  out->element_force = Eigen::VectorXd::Zero(num_dofs());
-  out->external_force = Eigen::VectorXd::Zero(num_dofs());
-  out->potential = 0.0;
+  evaluate_elements(s, v_local, kind, out, nullptr, tangent_weight);
+  assemble(s, v_local, kind, out, tangent_weight);
+}
 
-  Axisym2Output eo;
+void AxisymModel::evaluate_elements(const AxisymState& s, const Eigen::VectorXd& v_local,
+                                    StiffnessKind kind, AxisymSystem* out,
+                                    const std::vector<double>* flow_directions,
+                                    double weight) const {
+  const int nn = num_nodes();
+  Eigen::VectorXd& v = out->v_global;
+  v = v_local;
+  rotate_to_global(s, &v);
+  const bool want_k = kind != StiffnessKind::kNone;
+  const bool tangent = kind == StiffnessKind::kTangent;
+  const bool split = tangent && weight < 0.0;
+  if (want_k) {
+    if (out->K_elements.blocks() != nn) out->K_elements.resize(nn);
+    out->K_elements.set_zero();
+  }
+  if (split) {
+    if (out->K_tangent_part.blocks() != nn) out->K_tangent_part.resize(nn);
+    out->K_tangent_part.set_zero();
+  }
+  out->element_force.setZero(num_dofs());
+  out->element_potential = 0.0;
+  out->element_kind = kind;
+  out->element_weight = tangent && !split ? weight : -1.0;
+
+  Axisym2Output& eo = out->element;
+  if (out->keep_element_states) {
+    out->point_rates.resize(num_elements());
+    out->resultants.resize(num_elements());
+  }
+  auto add_blocks = [](const Mat6& k, int e, BlockTridiag* K) {
+    K->diag(e) += k.block<3, 3>(0, 0);
+    K->diag(e + 1) += k.block<3, 3>(3, 3);
+    K->lower(e) += k.block<3, 3>(3, 0);
+  };
+  const std::size_t np = rule_.zeta.size();
+  const bool dual = tangent && flow_directions && !flow_directions->empty();
+  if (tangent) {
+    out->directions.resize(2 * np * num_elements());
+    out->cutoff_rates.resize(np * num_elements());
+    assert(!dual || flow_directions->size() == out->directions.size());
+  }
   for (int e = 0; e < num_elements(); ++e) {
     Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
+    if (dual) sec.flow_direction = flow_directions->data() + 2 * np * e;
     const Vec6 d = v.segment<6>(3 * e);
-    axisym2_evaluate(geometry(s, e), sec, rule_, law_, d, kind, &eo, tangent_weight);
+    // Split: weight 0, eo.stiffness is the secant matrix and eo.tangent_part the rest.
+    axisym2_evaluate(geometry(s, e), sec, rule_, law_, d, kind, &eo, split ? 0.0 : weight, split);
     out->element_force.segment<6>(3 * e) += eo.force;
-    out->potential += eo.potential;
-    if (want_k) {
-      out->K.diag(e) += eo.stiffness.block<3, 3>(0, 0);
-      out->K.diag(e + 1) += eo.stiffness.block<3, 3>(3, 3);
-      out->K.lower(e) += eo.stiffness.block<3, 3>(3, 0);
+    out->element_potential += eo.potential;
+    if (out->keep_element_states) {
+      out->point_rates[e] = eo.point_rate;
+      out->resultants[e] = eo.stress_resultant;
+    }
+    if (want_k) add_blocks(eo.stiffness, e, &out->K_elements);
+    if (split) add_blocks(eo.tangent_part, e, &out->K_tangent_part);
+    if (tangent) {
+      std::copy(eo.point_direction.begin(), eo.point_direction.end(),
+                out->directions.begin() + 2 * np * e);
+      std::copy(eo.point_cutoff_rate.begin(), eo.point_cutoff_rate.end(),
+                out->cutoff_rates.begin() + np * e);
     }
   }
   if (fixed_gap_holder()) add_gap_holder(s, v, want_k, out);
-  for (int i = 0; i < nn; ++i) {
-    // The opposite face pushes the node against the face it touches.
-    const double sign = s.contact[i].on_holder_face ? -1.0 : 1.0;
-    out->external_force(3 * i + 1) += sign * s.contact[i].holder_force_N;
+}
+
+double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local,
+                              const AxisymSystem& sums) const {
+  // As assemble(): element potential, minus the work of the holder forces (f_ext . v), plus the
+  // friction potential of the sliding contact nodes.
+  double p = sums.element_potential;
+  for (int i = 0; i < num_nodes(); ++i) p -= holder_load(s.contact[i]) * sums.v_global(3 * i + 1);
+  for (int i = 0; i < num_nodes(); ++i) {
+    const NodeContact& c = s.contact[i];
+    if (c.tool < 0 || tools_[c.tool].sticking()) continue;
+    const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
+    const double vt_rel = v_local(3 * i) - tools_[c.tool].velocity().dot(t);
+    double f, ks, kt, phi;
+    friction_terms(s, i, vt_rel, &f, &ks, &kt, &phi);
+    p += phi;
   }
-  out->potential -= out->external_force.dot(v);
+  return p;
+}
+
+void AxisymModel::point_rate_increments(const AxisymState& s, const Eigen::VectorXd& dv_local,
+                                        std::vector<double>* dd) const {
+  const Eigen::VectorXd dv = to_global(s, dv_local);
+  const std::size_t np = rule_.zeta.size();
+  dd->resize(2 * np * num_elements());
+  for (int e = 0; e < num_elements(); ++e) {
+    const Vec5 de = axisym2_strain_rates(geometry(s, e), dv.segment<6>(3 * e));
+    for (std::size_t k = 0; k < np; ++k) {
+      const double z = rule_.zeta[k] * s.thickness[e];
+      (*dd)[2 * (np * e + k)] = de(0) + z * de(2);
+      (*dd)[2 * (np * e + k) + 1] = de(1) + z * de(3);
+    }
+  }
+}
+
+void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
+                           AxisymSystem* out, double tangent_weight) const {
+  const int nn = num_nodes();
+  const Eigen::VectorXd& v = out->v_global;
+  const bool want_k = kind != StiffnessKind::kNone;
+  // Blend the split tangent part in, or use sums made at this weight (or the secant's).
+  const bool split = out->element_kind == StiffnessKind::kTangent && out->element_weight < 0.0;
+  const bool blend = kind == StiffnessKind::kTangent && split;
+  assert(!want_k ||
+         (kind == StiffnessKind::kSecant ? out->element_kind == kind || split
+                                         : split || out->element_weight == tangent_weight));
+  if (want_k) {
+    if (out->K.blocks() != nn) out->K.resize(nn);
+    for (int i = 0; i < nn; ++i) {
+      out->K.diag(i) = out->K_elements.diag(i);
+      if (blend) out->K.diag(i) += tangent_weight * out->K_tangent_part.diag(i);
+      if (i + 1 == nn) continue;
+      out->K.lower(i) = out->K_elements.lower(i);
+      if (blend) out->K.lower(i) += tangent_weight * out->K_tangent_part.lower(i);
+    }
+  }
+  out->external_force.setZero(num_dofs());
+  out->potential = out->element_potential;
+  for (int i = 0; i < nn; ++i) {
+    out->external_force(3 * i + 1) += holder_load(s.contact[i]);
+    // f_ext . v node by node, in the order of potential() (the same rounding).
+    out->potential -= holder_load(s.contact[i]) * v(3 * i + 1);
+  }
 
   // Residual and stiffness in the nodal frames.
-  Eigen::VectorXd r = out->element_force - out->external_force;
+  Eigen::VectorXd& r = out->residual;
+  r = out->element_force - out->external_force;
   for (int i = 0; i < nn; ++i) {
     if (s.contact[i].tool < 0) continue;
     const Eigen::Matrix3d Q = frame(s, i);
-    r.segment<3>(3 * i) = Q.transpose() * r.segment<3>(3 * i);
+    const Eigen::Vector3d ri = r.segment<3>(3 * i);
+    r.segment<3>(3 * i) = Q.transpose() * ri;
     if (want_k) {
-      out->K.diag(i) = Q.transpose() * out->K.diag(i) * Q;
-      if (i > 0) out->K.lower(i - 1) = Q.transpose() * out->K.lower(i - 1);
-      if (i + 1 < nn) out->K.lower(i) = out->K.lower(i) * Q;
+      const Eigen::Matrix3d Kii = out->K.diag(i);
+      out->K.diag(i) = Q.transpose() * Kii * Q;
+      if (i > 0) {
+        const Eigen::Matrix3d C = out->K.lower(i - 1);
+        out->K.lower(i - 1) = Q.transpose() * C;
+      }
+      if (i + 1 < nn) {
+        const Eigen::Matrix3d C = out->K.lower(i);
+        out->K.lower(i) = C * Q;
+      }
     }
   }
   // Regularised Coulomb friction on sliding contact nodes.
@@ -321,15 +437,12 @@ void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local,
           kind == StiffnessKind::kTangent ? ks + tangent_weight * (kt - ks) : ks;
     }
   }
-  std::vector<char> mask;
-  Eigen::VectorXd values;
-  prescribed(s, &mask, &values);
+  prescribed(s, &out->fixed, &out->fixed_values);
   for (int k = 0; k < num_dofs(); ++k) {
-    if (!mask[k]) continue;
+    if (!out->fixed[k]) continue;
     r(k) = 0.0;
     if (want_k) out->K.fix_dof(k / 3, k % 3);
   }
-  out->residual = std::move(r);
 }
 
 void AxisymModel::add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v, bool want_k,
@@ -367,36 +480,15 @@ void AxisymModel::add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v,
     const double p = k * violation;
     out->gap_pressure[e] = p;
     out->element_force.segment<6>(3 * e) -= p * volume * bv;
-    out->potential += 0.5 * k * volume * violation * violation;
+    out->element_potential += 0.5 * k * volume * violation * violation;
     if (want_k) {
+      // Linear in v: the same matrix in the secant and the tangent (part of K_elements).
       const Mat6 kb = k * volume * bv * bv.transpose();
-      out->K.diag(e) += kb.block<3, 3>(0, 0);
-      out->K.diag(e + 1) += kb.block<3, 3>(3, 3);
-      out->K.lower(e) += kb.block<3, 3>(3, 0);
+      out->K_elements.diag(e) += kb.block<3, 3>(0, 0);
+      out->K_elements.diag(e + 1) += kb.block<3, 3>(3, 3);
+      out->K_elements.lower(e) += kb.block<3, 3>(3, 0);
     }
   }
-}
-
-void AxisymModel::element_states(const AxisymState& s, const Eigen::VectorXd& v_local,
-                                 std::vector<std::vector<double>>* point_rates,
-                                 std::vector<Vec5>* resultants) const {
-  const Eigen::VectorXd v = to_global(s, v_local);
-  point_rates->resize(num_elements());
-  resultants->resize(num_elements());
-  Axisym2Output eo;
-  for (int e = 0; e < num_elements(); ++e) {
-    Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
-    axisym2_evaluate(geometry(s, e), sec, rule_, law_, v.segment<6>(3 * e), StiffnessKind::kNone,
-                     &eo);
-    (*point_rates)[e] = eo.point_rate;
-    (*resultants)[e] = eo.stress_resultant;
-  }
-}
-
-double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local) const {
-  AxisymSystem sys;
-  evaluate(s, v_local, StiffnessKind::kNone, &sys);
-  return sys.potential;
 }
 
 Eigen::Vector2d AxisymModel::node_force(const AxisymSystem& sys, int node) const {

@@ -49,12 +49,34 @@ struct AxisymState {
 struct AxisymSystem {
   BlockTridiag K;                  // stiffness with prescribed dofs replaced by identity
   Eigen::VectorXd residual;        // at free dofs; zero at prescribed dofs
-  double potential = 0.0;          // flow potential (line-search merit); only with kNone
+  double potential = 0.0;          // flow potential (line-search merit); with kNone and kTangent
   Eigen::VectorXd element_force;   // f_el in the global frame (reactions = f_el - f_ext)
   Eigen::VectorXd external_force;  // f_ext in the global frame
   // Fixed-gap blank holder: contact pressure on the flange per element [MPa] (0 where the flange
   // is thinner than the gap); empty without a fixed-gap holder.
   std::vector<double> gap_pressure;
+  // Element sums of evaluate_elements() (global frame, before friction and prescribed dofs):
+  // the stiffness, K_elements = secant with kSecant or split kTangent, secant + element_weight *
+  // tangent part with a kTangent at a fixed weight; and the tangent part with a split kTangent.
+  BlockTridiag K_elements;
+  BlockTridiag K_tangent_part;
+  double element_weight = -1.0;    // kTangent: the weight in K_elements, -1: split
+  double element_potential = 0.0;  // with kNone and kTangent
+  StiffnessKind element_kind = StiffnessKind::kNone;  // what the element sums hold
+  // Workspace, reused when the same AxisymSystem is evaluated again (no allocations per
+  // iteration): the global velocity, the prescribed mask and values, one element's output.
+  Eigen::VectorXd v_global;
+  std::vector<char> fixed;
+  // kTangent: flow direction m (2 each) and cut-off rate eh per element and thickness point.
+  std::vector<double> directions;
+  std::vector<double> cutoff_rates;
+  // Set keep_element_states to have evaluate_elements() with kNone also keep the effective strain
+  // rate at every thickness point and the stress resultants of every element.
+  bool keep_element_states = false;
+  std::vector<std::vector<double>> point_rates;
+  std::vector<Vec5> resultants;
+  Eigen::VectorXd fixed_values;
+  Axisym2Output element;
 };
 
 class AxisymModel {
@@ -100,6 +122,11 @@ class AxisymModel {
   // are only cleared at nodes that left the die face.
   void update_holder(AxisymState* s) const;
   bool fixed_gap_holder() const { return holder_gap_ > 0.0; }
+  // Axial load of the holder on a node: a force holder and a gap holder's pressure push a node on
+  // the die face up (+z); a gap holder's die-side pressure pushes a node on the holder face down.
+  static double holder_load(const NodeContact& c) {
+    return c.on_holder_face ? -c.holder_force_N : c.holder_force_N;
+  }
   // A node of the flange between the die face and a fixed-gap holder (touching either).
   static bool in_gap(const NodeContact& c) { return c.on_die_face || c.on_holder_face; }
   // A flange node of a fixed-gap holder that touches one face while its thickness fills the gap
@@ -111,17 +138,36 @@ class AxisymModel {
   std::vector<double> holder_forces_from_gap(const AxisymState& s, const AxisymSystem& sys) const;
 
   // Evaluates at the local-frame velocity `v_local`.
-  // kTangent blends secant and consistent tangent with `tangent_weight` in [0, 1].
+  // kTangent blends secant and consistent tangent with `tangent_weight` in [0, 1]. The potential is
+  // computed with kNone and kTangent (the line search starts from the tangent's point), not with
+  // kSecant. Reuse `out` across calls to avoid allocations.
   void evaluate(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
                 AxisymSystem* out, double tangent_weight = 1.0) const;
 
-  // Potential only (line search).
-  double potential(const AxisymState& s, const Eigen::VectorXd& v_local) const;
+  // evaluate() in two parts. evaluate_elements() sums the elements (the expensive part; it
+  // depends on the velocity only, not on the lagged contact forces); assemble() then adds the
+  // holder and friction forces, rotates into the nodal frames and imposes the prescribed dofs, for
+  // any kind and tangent weight that the element sums provide (split kTangent sums serve all; a
+  // kTangent at a fixed weight serves that weight and kNone).
+  // `flow_directions` (kTangent, optional, 2 per element and point): the primal-dual tangent
+  // (material/flow_direction.h); empty or null: the consistent tangent. `weight` (kTangent): the
+  // fixed tangent weight, or -1 for the split sums (one more matrix product per element).
+  void evaluate_elements(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
+                         AxisymSystem* out, const std::vector<double>* flow_directions = nullptr,
+                         double weight = -1.0) const;
+  void assemble(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
+                AxisymSystem* out, double tangent_weight = 1.0) const;
 
-  // Effective strain rate at every thickness point and stress resultants of every element.
-  void element_states(const AxisymState& s, const Eigen::VectorXd& v_local,
-                      std::vector<std::vector<double>>* point_rates,
-                      std::vector<Vec5>* resultants) const;
+  // The flow potential at v_local from element sums there (evaluate_elements() with kNone or
+  // kTangent): what assemble() puts into AxisymSystem::potential, without residual and matrix
+  // (the line search's trial points).
+  double potential(const AxisymState& s, const Eigen::VectorXd& v_local,
+                   const AxisymSystem& sums) const;
+
+  // In-plane rate increments (2 per element and thickness point) of a local-frame velocity
+  // increment.
+  void point_rate_increments(const AxisymState& s, const Eigen::VectorXd& dv_local,
+                             std::vector<double>* dd) const;
 
   // Per-node contact force on the sheet (global frame): f_el - f_ext at the node.
   Eigen::Vector2d node_force(const AxisymSystem& sys, int node) const;
@@ -134,6 +180,8 @@ class AxisymModel {
   // Fixed-gap holder penalty on flange elements (see the .cc); fills out->gap_pressure.
   void add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
                       AxisymSystem* out) const;
+  // v <- global-frame velocities of the local-frame v, in place.
+  void rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const;
   void friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
                       double* stiff_secant, double* stiff_tangent, double* potential) const;
 

@@ -1,16 +1,107 @@
 #include "run/axisym_problem.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace vs {
 
+AxisymStepProblem::AxisymStepProblem(const AxisymModel& model, AxisymState* state)
+    : model_(model),
+      state_(state),
+      ball_(model.law().A()),
+      dual_(2 * model.rule().zeta.size() * model.num_elements(), 0.0) {}
+
+AxisymSystem& AxisymStepProblem::elements_at(const Eigen::VectorXd& x, StiffnessKind kind,
+                                             const std::vector<double>& n, long n_id,
+                                             double theta) {
+  for (Slot& slot : slots_) {
+    if (!slot.valid || slot.x.size() != x.size() || slot.x != x) continue;
+    const AxisymSystem& sys = slot.sys;
+    const bool split = sys.element_kind == StiffnessKind::kTangent && sys.element_weight < 0.0;
+    const bool serves = kind == StiffnessKind::kTangent
+                            ? sys.element_kind == kind && slot.directions_id == n_id &&
+                                  (split || sys.element_weight == theta)
+                            : sys.element_kind == kind || split;
+    if (serves) return slot.sys;
+  }
+  Slot& slot = slots_[1 - last_];
+  slot.x = x;
+  model_.evaluate_elements(*state_, x, kind, &slot.sys, &n, theta == 1.0 ? 1.0 : -1.0);
+  slot.valid = true;
+  slot.directions_id = n_id;
+  return slot.sys;
+}
+
 double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
-                                   Eigen::VectorXd* residual) {
-  model_.evaluate(*state_, x, theta > 0.0 ? StiffnessKind::kTangent : StiffnessKind::kSecant, &sys_,
-                  theta);
-  std::swap(*K, sys_.K);
-  *residual = sys_.residual;
-  return sys_.element_force.norm();
+                                   Eigen::VectorXd* residual, double* potential) {
+  const StiffnessKind kind = theta > 0.0 ? StiffnessKind::kTangent : StiffnessKind::kSecant;
+  AxisymSystem& sys = elements_at(x, kind, dual_, dual_id_, theta);
+  last_ = &sys == &slots_[0].sys ? 0 : 1;
+  last_theta_ = theta;
+  model_.assemble(*state_, x, kind, &sys, theta);
+  std::swap(*K, sys.K);
+  *residual = sys.residual;
+  *potential = sys.potential;
+  return sys.element_force.norm();
+}
+
+void AxisymStepProblem::set_direction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) {
+  // The dual update needs the flow directions and cut-off rates at x: the last evaluation's.
+  has_dual_step_ = false;
+  trial_alpha_ = -1.0;
+  const AxisymSystem& sys = slots_[last_].sys;
+  if (sys.element_kind != StiffnessKind::kTangent || slots_[last_].x != x) return;
+  model_.point_rate_increments(*state_, dx, &rate_step_);
+  const Eigen::Matrix2d& A = model_.law().A();
+  dual_step_.resize(dual_.size());
+  for (std::size_t k = 0; k < dual_.size(); k += 2) {
+    const Eigen::Vector2d m(sys.directions[k], sys.directions[k + 1]);
+    const Eigen::Vector2d n(dual_[k], dual_[k + 1]);
+    const Eigen::Vector2d dd(rate_step_[k], rate_step_[k + 1]);
+    const double eh = sys.cutoff_rates[k / 2];
+    // A constant viscosity (eh = 0) has no rank-one part: its directions stay put.
+    const Eigen::Vector2d dn =
+        eh > 0.0 ? flow_direction_increment(A, m, eh, n, dd) : Eigen::Vector2d::Zero();
+    dual_step_[k] = dn(0);
+    dual_step_[k + 1] = dn(1);
+  }
+  has_dual_step_ = true;
+}
+
+void AxisymStepProblem::trial_directions(double alpha) {
+  trial_alpha_ = alpha;
+  if (!has_dual_step_) {
+    trial_dual_ = dual_;
+    trial_dual_id_ = dual_id_;
+    return;
+  }
+  trial_dual_.resize(dual_.size());
+  for (std::size_t k = 0; k < dual_.size(); k += 2) {
+    const Eigen::Vector2d v = ball_.project(Eigen::Vector2d(
+        dual_[k] + alpha * dual_step_[k], dual_[k + 1] + alpha * dual_step_[k + 1]));
+    trial_dual_[k] = v(0);
+    trial_dual_[k + 1] = v(1);
+  }
+  trial_dual_id_ = next_id_++;
+}
+
+double AxisymStepProblem::potential(const Eigen::VectorXd& x_trial, double alpha) {
+  // Summed with the tangent (at the directions and weight the step would give): if the line
+  // search accepts x_trial, the next evaluate() is there and finds these sums.
+  trial_directions(alpha);
+  // A step from weight 1 keeps weight 1 when accepted; from a smaller one the weight moves on.
+  AxisymSystem& sys = elements_at(x_trial, StiffnessKind::kTangent, trial_dual_, trial_dual_id_,
+                                  last_theta_ == 1.0 ? 1.0 : -1.0);
+  return model_.potential(*state_, x_trial, sys);
+}
+
+void AxisymStepProblem::step_taken(double alpha) {
+  // Usually the line search's last trial was at this alpha: its directions are the new ones.
+  if (!(has_dual_step_ && trial_alpha_ == alpha)) trial_directions(alpha);
+  std::swap(dual_, trial_dual_);
+  dual_id_ = trial_dual_id_;
+  has_dual_step_ = false;
+  trial_alpha_ = -1.0;
 }
 
 void AxisymStepProblem::reactions(const AxisymSystem& sys, std::vector<double>* normal) const {
@@ -50,7 +141,7 @@ void AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
   // stick/slip check at the end of each iteration, each node's update relaxed.
   (void)x;
   std::vector<double> n;
-  reactions(sys_, &n);
+  reactions(slots_[last_].sys, &n);
   const int nn = model_.num_nodes();
   if (relax_.size() != static_cast<std::size_t>(nn)) {
     relax_.assign(nn, 1.0);
@@ -74,7 +165,10 @@ Eigen::VectorXd AxisymStepProblem::start(const Eigen::VectorXd& v_global) const 
 }
 
 void AxisymStepProblem::finish(const Eigen::VectorXd& x) {
+  // One pass: reactions, and the effective strain rates at every thickness point (for hardening
+  // and the step size) and the stress resultants (for outputs and equilibrium checks).
   AxisymSystem sys;
+  sys.keep_element_states = true;
   model_.evaluate(*state_, x, StiffnessKind::kNone, &sys);
   reactions(sys, &normal_);
   if (model_.fixed_gap_holder()) holder_forces_ = model_.holder_forces_from_gap(*state_, sys);
@@ -84,9 +178,8 @@ void AxisymStepProblem::finish(const Eigen::VectorXd& x) {
       punch_force_ += model_.node_force(sys, i).y();
     }
   }
-  // Effective strain rates at every thickness point (for hardening and the step size) and the
-  // stress resultants (for outputs and equilibrium checks).
-  model_.element_states(*state_, x, &point_rates_, &resultants_);
+  point_rates_ = std::move(sys.point_rates);
+  resultants_ = std::move(sys.resultants);
   max_rate_ = 0.0;
   for (const auto& pr : point_rates_) {
     for (double r : pr) max_rate_ = std::max(max_rate_, r);

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "material/flow_direction.h"
 #include "model/axisym_model.h"
 #include "solver/nonlinear_solver.h"
 
@@ -12,12 +13,15 @@ namespace vs {
 
 class AxisymStepProblem : public NonlinearProblem {
  public:
-  AxisymStepProblem(const AxisymModel& model, AxisymState* state) : model_(model), state_(state) {}
+  AxisymStepProblem(const AxisymModel& model, AxisymState* state);
 
   double evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
-                  Eigen::VectorXd* residual) override;
-  double potential(const Eigen::VectorXd& x) override { return model_.potential(*state_, x); }
+                  Eigen::VectorXd* residual, double* potential) override;
+  void set_direction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) override;
+  double potential(const Eigen::VectorXd& x_trial, double alpha) override;
+  void step_taken(double alpha) override;
   void update_lagged(const Eigen::VectorXd& x) override;
+  bool self_starting() const override { return true; }
 
   // Start vector: previous velocity in the current frames, prescribed values imposed.
   Eigen::VectorXd start(const Eigen::VectorXd& v_global) const;
@@ -40,7 +44,35 @@ class AxisymStepProblem : public NonlinearProblem {
 
   const AxisymModel& model_;
   AxisymState* state_;
-  AxisymSystem sys_;
+  // Element sums for the last two velocities evaluated (the iterate and the line search's trial
+  // point): an accepted trial point is not summed again by the next evaluate(), and the secant
+  // fallback at a rejected Newton step reuses the iterate's sums.
+  struct Slot {
+    Eigen::VectorXd x;
+    AxisymSystem sys;
+    bool valid = false;
+    long directions_id = -1;  // which flow directions its tangent used (ids below)
+  };
+  // The slot holding element sums at x that serve `kind` (kTangent: with the flow directions n
+  // and tangent weight theta), computed if neither slot does (into the slot the last evaluate()
+  // did not use): for weight 1, the weight that self-starting solves keep, at that weight (one
+  // matrix product per element); otherwise split (two).
+  AxisymSystem& elements_at(const Eigen::VectorXd& x, StiffnessKind kind,
+                            const std::vector<double>& n, long n_id, double theta);
+  Slot slots_[2];
+  int last_ = 0;             // slot of the last evaluate(): its reactions feed update_lagged()
+  double last_theta_ = 1.0;  // tangent weight of the last evaluate()
+  // Primal-dual Newton (material/flow_direction.h): the flow directions n of the iterate, 2 per
+  // element and thickness point (zero at the start of a solve, so that its first matrix is the
+  // direct iteration's), and after set_direction() their full-step increment dn; the step alpha
+  // moves them to n + alpha dn, projected onto the ball (trial_dual_). Every set of directions
+  // gets a new id, which identifies it in the slots without comparing the vectors.
+  void trial_directions(double alpha);
+  FlowDirectionBall ball_;
+  std::vector<double> dual_, dual_step_, trial_dual_, rate_step_;
+  long dual_id_ = 0, trial_dual_id_ = -1, next_id_ = 1;
+  bool has_dual_step_ = false;
+  double trial_alpha_ = -1.0;  // step of trial_dual_ (the last potential() call), -1: none
   double punch_force_ = 0.0;
   double max_rate_ = 0.0;
   std::vector<double> normal_;

@@ -1,13 +1,14 @@
 #include "solver/block_tridiag.h"
 
 #include <cassert>
+#include <cmath>
 
 namespace vs {
 
 void BlockTridiag::resize(int blocks) {
   diag_.assign(blocks, Block::Zero());
   lower_.assign(blocks > 0 ? blocks - 1 : 0, Block::Zero());
-  pivot_.resize(blocks);
+  pivot_.assign(blocks, Block::Zero());
   W_.assign(blocks, Block::Zero());
 }
 
@@ -37,32 +38,88 @@ Eigen::VectorXd BlockTridiag::multiply(const Eigen::VectorXd& x) const {
   return y;
 }
 
+namespace {
+
+using Block = BlockTridiag::Block;
+
+// Cholesky P = L L^T of a symmetric 3x3 block (lower triangle of P read); stores 1 / L(a, a) on
+// the diagonal. False unless every pivot is positive (and finite).
+bool cholesky3(const Block& P, Block* L) {
+  Block& F = *L;
+  const double l00 = P(0, 0);
+  if (!(l00 > 0.0)) return false;
+  F(0, 0) = 1.0 / std::sqrt(l00);
+  F(1, 0) = P(1, 0) * F(0, 0);
+  F(2, 0) = P(2, 0) * F(0, 0);
+  const double l11 = P(1, 1) - F(1, 0) * F(1, 0);
+  if (!(l11 > 0.0)) return false;
+  F(1, 1) = 1.0 / std::sqrt(l11);
+  F(2, 1) = (P(2, 1) - F(2, 0) * F(1, 0)) * F(1, 1);
+  const double l22 = P(2, 2) - F(2, 0) * F(2, 0) - F(2, 1) * F(2, 1);
+  if (!(l22 > 0.0) || !std::isfinite(l22)) return false;
+  F(2, 2) = 1.0 / std::sqrt(l22);
+  return true;
+}
+
+// y = L^-1 b (forward substitution).
+Eigen::Vector3d lower_solve(const Block& F, const Eigen::Vector3d& b) {
+  Eigen::Vector3d y;
+  y(0) = b(0) * F(0, 0);
+  y(1) = (b(1) - F(1, 0) * y(0)) * F(1, 1);
+  y(2) = (b(2) - F(2, 0) * y(0) - F(2, 1) * y(1)) * F(2, 2);
+  return y;
+}
+
+// x = L^-T y (back substitution).
+Eigen::Vector3d upper_solve(const Block& F, const Eigen::Vector3d& y) {
+  Eigen::Vector3d x;
+  x(2) = y(2) * F(2, 2);
+  x(1) = (y(1) - F(2, 1) * x(2)) * F(1, 1);
+  x(0) = (y(0) - F(1, 0) * x(1) - F(2, 0) * x(2)) * F(0, 0);
+  return x;
+}
+
+}  // namespace
+
 bool BlockTridiag::factorize() {
+  // Block elimination: P_0 = K_00; with C = K(i, i-1) and Y = L_(i-1)^-1 C^T,
+  //   W_i = C P_(i-1)^-1 = (L_(i-1)^-T Y)^T,  P_i = K_ii - W_i C^T = K_ii - Y^T Y.
   const int n = blocks();
-  Block D = n > 0 ? diag_[0] : Block::Zero();
   for (int i = 0; i < n; ++i) {
+    Block P = diag_[i];
     if (i > 0) {
-      W_[i] = pivot_[i - 1].solve(lower_[i - 1].transpose()).transpose();
-      D = diag_[i] - W_[i] * lower_[i - 1].transpose();
+      const Block& C = lower_[i - 1];
+      Block Y;
+      for (int j = 0; j < 3; ++j) Y.col(j) = lower_solve(pivot_[i - 1], C.row(j).transpose());
+      for (int j = 0; j < 3; ++j) W_[i].row(j) = upper_solve(pivot_[i - 1], Y.col(j)).transpose();
+      P.noalias() -= Y.transpose() * Y;
     }
-    pivot_[i].compute(D);
-    if (pivot_[i].info() != Eigen::Success) return false;
+    if (!cholesky3(P, &pivot_[i])) return false;
   }
   return true;
 }
 
 Eigen::VectorXd BlockTridiag::solve(const Eigen::VectorXd& b) const {
+  Eigen::VectorXd x = b;
+  solve_in_place(&x);
+  return x;
+}
+
+void BlockTridiag::solve_in_place(Eigen::VectorXd* b) const {
+  // Forward: y_i = b_i - W_i y_(i-1); backward: x_i = P_i^-1 (y_i - K(i+1, i)^T x_(i+1)). Both
+  // sweeps overwrite b block by block.
   const int n = blocks();
-  assert(b.size() == 3 * n);
-  Eigen::VectorXd y = b;
-  for (int i = 1; i < n; ++i) y.segment<3>(3 * i) -= W_[i] * y.segment<3>(3 * (i - 1));
-  Eigen::VectorXd x(3 * n);
+  assert(b->size() == 3 * n);
+  Eigen::VectorXd& y = *b;
+  for (int i = 1; i < n; ++i) {
+    const Eigen::Vector3d prev = y.segment<3>(3 * (i - 1));
+    y.segment<3>(3 * i) -= W_[i] * prev;
+  }
   for (int i = n - 1; i >= 0; --i) {
     Eigen::Vector3d rhs = y.segment<3>(3 * i);
-    if (i + 1 < n) rhs -= lower_[i].transpose() * x.segment<3>(3 * (i + 1));
-    x.segment<3>(3 * i) = pivot_[i].solve(rhs);
+    if (i + 1 < n) rhs -= lower_[i].transpose() * y.segment<3>(3 * (i + 1));
+    y.segment<3>(3 * i) = upper_solve(pivot_[i], lower_solve(pivot_[i], rhs));
   }
-  return x;
 }
 
 }  // namespace vs

@@ -1,9 +1,10 @@
 // Symmetric block-tridiagonal matrix with 3x3 blocks: the exact structure of the axisymmetric
 // meridian chain (node i couples only to i-1 and i+1). Factorised by block LDL^T in O(n) with a
-// Cholesky of every pivot block, which doubles as the positive-definiteness check.
+// Cholesky of every pivot block, which doubles as the positive-definiteness check. The 3x3 kernels
+// are written out (block_tridiag.cc): Eigen's LLT solve with a matrix right-hand side goes through
+// its dynamic-size triangular solver, which costs more than the arithmetic at this size.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
 
@@ -34,11 +35,15 @@ class BlockTridiag {
   bool factorize();
   // Solves K x = b with the last factorisation.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The same, overwriting b with x (no allocation).
+  void solve_in_place(Eigen::VectorXd* b) const;
 
  private:
   std::vector<Block> diag_, lower_;
-  std::vector<Eigen::LLT<Block>> pivot_;
-  std::vector<Block> W_;  // W_i = lower(i-1) * pivot(i-1)^-1
+  // Cholesky factor L of every pivot block P_i = L L^T (lower triangle; the diagonal holds
+  // 1 / L(a, a)).
+  std::vector<Block> pivot_;
+  std::vector<Block> W_;  // W_i = lower(i-1) * P_(i-1)^-1
 };
 
 }  // namespace vs

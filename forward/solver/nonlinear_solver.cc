@@ -17,33 +17,40 @@ NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptio
                                  Eigen::VectorXd* x) {
   NonlinearSummary sum;
   BlockTridiag K;
-  Eigen::VectorXd r;
+  Eigen::VectorXd r, dx, trial;
   const bool newton_allowed = options.kind == SolverKind::kNewton;
   // Tangent weight: 0 = direct (secant) iteration, 1 = Newton. Adapted like a trust region: a
   // full step accepted by the line search moves it towards 1, a rejected step back towards 0.
   double theta = 0.0;
+  const bool self_starting = problem.self_starting();
+  const int picard_before_newton = self_starting ? 0 : options.picard_before_newton;
+  const double initial_theta = self_starting ? 1.0 : options.initial_theta;
   if (options.verbose) std::fprintf(stderr, "    iter  theta   |dx|/|x|    |r|/|f|     alpha\n");
   for (int it = 1; it <= options.max_iterations; ++it) {
-    if (newton_allowed && it == options.picard_before_newton + 1) theta = options.initial_theta;
+    if (newton_allowed && it == picard_before_newton + 1) theta = initial_theta;
     double used_theta = theta;
-    double scale = problem.evaluate(*x, used_theta, &K, &r);
+    double p0 = 0.0;
+    double scale = problem.evaluate(*x, used_theta, &K, &r, &p0);
     if (!r.allFinite()) {
       sum.message = "residual is not finite";
       return sum;
     }
     sum.residual_norm = relative(r.norm(), scale);
     bool factored = K.factorize();
-    Eigen::VectorXd dx;
     double alpha = 1.0;
     bool accepted = false;
     if (used_theta > 0.0 && factored) {
-      dx = -K.solve(r);
-      // Armijo backtracking on the convex flow potential; in the round-off regime accept.
-      const double p0 = problem.potential(*x);
+      dx = -r;
+      K.solve_in_place(&dx);
+      problem.set_direction(*x, dx);
+      // Armijo backtracking on the convex flow potential; in the round-off regime, or when the
+      // full step already passes the convergence test below (it ends the solve), accept.
       const double slope = r.dot(dx);
       accepted = slope < 0.0;
-      if (accepted && -slope > 1e-13 * std::abs(p0)) {
-        while (problem.potential(*x + alpha * dx) > p0 + 1e-4 * alpha * slope) {
+      const bool final_step = it > 1 && sum.residual_norm <= options.tolerance &&
+                              dx.norm() <= options.tolerance * (*x + dx).norm();
+      if (accepted && !final_step && -slope > 1e-13 * std::abs(p0)) {
+        while (problem.potential(trial = *x + alpha * dx, alpha) > p0 + 1e-4 * alpha * slope) {
           alpha *= 0.5;
           if (alpha < 1.0 / 16.0) {
             accepted = false;
@@ -64,7 +71,7 @@ NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptio
     if (!accepted) {
       // Direct iteration: always SPD and monotone in the potential (Kacanov).
       if (used_theta > 0.0) {
-        scale = problem.evaluate(*x, 0.0, &K, &r);
+        scale = problem.evaluate(*x, 0.0, &K, &r, &p0);
         sum.residual_norm = relative(r.norm(), scale);
         if (!K.factorize()) {
           sum.message = "secant matrix is not positive definite";
@@ -76,15 +83,18 @@ NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptio
       }
       used_theta = 0.0;
       alpha = 1.0;
-      dx = -K.solve(r);
+      dx = -r;
+      K.solve_in_place(&dx);
+      problem.set_direction(*x, dx);
       ++sum.picard_steps;
-      if (newton_allowed && it > options.picard_before_newton && theta == 0.0) {
+      if (newton_allowed && it > picard_before_newton && theta == 0.0) {
         theta = 0.1;  // try blending again next iteration
       }
     } else {
       ++sum.newton_steps;
     }
     *x += alpha * dx;
+    problem.step_taken(alpha);
     sum.iterations = it;
     sum.update_norm = relative(alpha * dx.norm(), x->norm());
     if (options.verbose) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <random>
 
 namespace vs {
@@ -31,12 +32,26 @@ TEST(BlockTridiag, SolvesLikeADenseCholesky) {
   const Eigen::VectorXd x = K.solve(b);
   EXPECT_NEAR((D * x - b).norm(), 0.0, 1e-12);
   EXPECT_NEAR(x(3 * 2 + 1), b(3 * 2 + 1), 1e-14);
+  Eigen::VectorXd y = b;
+  K.solve_in_place(&y);
+  EXPECT_EQ(y, x);
+  // The factor of the first pivot block is its Cholesky factor: the solve matches Eigen's LLT.
+  const Eigen::VectorXd dense = Eigen::LLT<Eigen::MatrixXd>(D).solve(b);
+  EXPECT_NEAR((x - dense).norm(), 0.0, 1e-12 * dense.norm());
 }
 
 TEST(BlockTridiag, ReportsIndefiniteMatrices) {
   BlockTridiag K(2);
   K.diag(0) = Eigen::Matrix3d::Identity();
   K.diag(1) = -Eigen::Matrix3d::Identity();
+  EXPECT_FALSE(K.factorize());
+  // Indefinite only through the coupling (a later pivot), and a NaN entry.
+  K.diag(1) = Eigen::Matrix3d::Identity();
+  K.lower(0) = 2.0 * Eigen::Matrix3d::Identity();
+  EXPECT_FALSE(K.factorize());
+  K.lower(0).setZero();
+  EXPECT_TRUE(K.factorize());
+  K.diag(0)(2, 2) = std::nan("");
   EXPECT_FALSE(K.factorize());
 }
 
