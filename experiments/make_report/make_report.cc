@@ -39,6 +39,14 @@ constexpr Study kStudies[] = {
      "Example 1 with one extreme setting at a time (plus a few example 2/3 cases): convergence "
      "statistics and physical checks, and the cases where the solver returns an untrustworthy "
      "answer. Command: `build-exp/experiments/stability`."},
+    {"06_step_stability", "4. Stability of the explicit step (what calibration sees)",
+     "Example 1 with the punch friction swept over 0.0990-0.1010: deviation of the outputs from "
+     "a straight line (jitter) and load-curve roughness against the travel step relative to the "
+     "element length. Command: `build-exp/experiments/step_stability`."},
+    {"07_calibration_cost", "5. Calibration error against calibration time",
+     "Twin experiment: four parameters identified from fine-model data with coarser forward "
+     "models inside the fit; parameter bias against fit time. Command: "
+     "`build-exp/experiments/calibration_cost`."},
 };
 
 std::string today() {
