@@ -18,9 +18,13 @@ if [[ "${1:-}" == "--quick" ]]; then
 fi
 export OMP_NUM_THREADS=1
 cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j2 --target performance_benchmark work_precision stability make_report
+cmake --build "$build" -j2 --target performance_benchmark work_precision stability esaform_cup step_stability \
+  calibration_cost make_report
 bin="$build/experiments"
 "$bin/performance_benchmark" "${quick[@]}" --out "$root/01_performance/results"
 "$bin/work_precision" "${quick[@]}" --out "$root/02_work_precision/results"
 "$bin/stability" "${quick[@]}" --out "$root/03_stability/results"
+"$bin/esaform_cup" "${quick[@]}" --out "$root/04_esaform_cup/results"
+"$bin/step_stability" "${quick[@]}" --out "$root/06_step_stability/results"
+"$bin/calibration_cost" "${quick[@]}" --out "$root/07_calibration_cost/results"
 "$bin/make_report" "${quick[@]}" --root "$root"

@@ -223,6 +223,7 @@ std::string time_integration_study(const std::string& scene_name, const Override
     Overrides ov = scene_ov;
     ov.push_back({"numerics.time_integration", scheme});
     ov.push_back({"numerics.max_travel_increment_mm", fmt::format("{}", dt)});
+    ov.push_back({"numerics.max_travel_increment_per_length", "1e9"});
     ov.push_back({"numerics.max_strain_increment", "0.5"});
     t.run = run_timed(make_scene(path, ov), 3, kBudgetS, 0.5);
     ti_measure(&t);

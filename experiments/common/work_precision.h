@@ -85,7 +85,10 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
   }
   for (const char* v : quick ? std::vector<const char*>{"2"}
                              : std::vector<const char*>{"2", "1", "0.5", "0.125"}) {
-    s.push_back({"travel cap", v, {{"numerics.max_travel_increment_mm", v}}});
+    s.push_back({"travel cap",
+                 v,
+                 {{"numerics.max_travel_increment_mm", v},
+                  {"numerics.max_travel_increment_per_length", "1e9"}}});
   }
   for (const char* v : quick ? std::vector<const char*>{"0.08"}
                              : std::vector<const char*>{"0.08", "0.04", "0.01", "0.005"}) {
@@ -104,11 +107,14 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
     s.push_back({"tolerance", v, {{"numerics.tolerance", v}}});
   }
   s.push_back({"time integration", "euler", {{"numerics.time_integration", "euler"}}});
+  // Indices 0-4 are edited below; the relative travel cap is switched off (last) so that the
+  // absolute cap sets the grid.
   const Overrides coarse{{"blank.elements", el(0.5)},
                          {"numerics.max_travel_increment_mm", "2"},
                          {"numerics.max_strain_increment", "0.08"},
                          {"numerics.thickness_points", "3"},
-                         {"numerics.tolerance", "1e-3"}};
+                         {"numerics.tolerance", "1e-3"},
+                         {"numerics.max_travel_increment_per_length", "1e9"}};
   s.push_back({"coarse combo", "A", coarse});
   if (!quick) {
     Overrides b = coarse;
@@ -126,6 +132,7 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
                  fmt::format("L{}", k),
                  {{"blank.elements", std::to_string(n0 << k)},
                   {"numerics.max_travel_increment_mm", fmt::format("{}", 0.1 / f)},
+                  {"numerics.max_travel_increment_per_length", "1e9"},
                   {"numerics.max_strain_increment", fmt::format("{}", 0.02 / f)},
                   {"numerics.thickness_points", "9"},
                   {"numerics.tolerance", "1e-8"}}});

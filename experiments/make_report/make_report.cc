@@ -1,4 +1,4 @@
-// Collects the studies' summaries (<root>/<study>/results/summary.md) into one REPORT.md with a
+// Collects the studies' summaries (<root>/<study>/results/summary.md or the study's own file) into one REPORT.md with a
 // header (date, code version, machine), a short description of each study and the hand-written
 // interpretation (experiments/INTERPRETATION.md).
 //
@@ -21,6 +21,7 @@ struct Study {
   const char* folder;
   const char* title;
   const char* what;
+  const char* summary = "summary.md";  // in <folder>/results/
 };
 
 constexpr Study kStudies[] = {
@@ -39,6 +40,19 @@ constexpr Study kStudies[] = {
      "Example 1 with one extreme setting at a time (plus a few example 2/3 cases): convergence "
      "statistics and physical checks, and the cases where the solver returns an untrustworthy "
      "answer. Command: `build-exp/experiments/stability`."},
+    {"04_esaform_cup", "4. Validation: the ESAFORM 2021 cup height (issue 6)",
+     "The AA6016-T4 cup for both blank-holder models (10 kN force, fixed 1.04 mm gap), three "
+     "published hardening fits and friction 0.05-0.10; predicted mean cup height against the "
+     "measured 34.15 mm (33.13-35.26 mm). Command: `build-exp/experiments/esaform_cup`.",
+     "cup_heights.md"},
+    {"06_step_stability", "5. Stability of the explicit step (what calibration sees)",
+     "Example 1 with the punch friction swept over 0.0990-0.1010: deviation of the outputs from "
+     "a straight line (jitter) and load-curve roughness against the travel step relative to the "
+     "element length. Command: `build-exp/experiments/step_stability`."},
+    {"07_calibration_cost", "6. Calibration error against calibration time",
+     "Twin experiment: four parameters identified from fine-model data with coarser forward "
+     "models inside the fit; parameter bias against fit time. Command: "
+     "`build-exp/experiments/calibration_cost`."},
 };
 
 std::string today() {
@@ -75,7 +89,7 @@ int main(int argc, char** argv) {
   const std::string interp = std::string(VS_SOURCE_DIR) + "/experiments/INTERPRETATION.md";
   if (!quick && std::filesystem::exists(interp)) md += vsx::read_text(interp) + "\n";
   for (const Study& s : kStudies) {
-    const std::string summary = root + "/" + s.folder + "/results/summary.md";
+    const std::string summary = root + "/" + s.folder + "/results/" + s.summary;
     md += fmt::format("## {}\n\n{} Folder: [`{}/`]({}/), data: [`results/`]({}/results/).\n\n",
                       s.title, s.what, s.folder, s.folder, s.folder);
     if (std::filesystem::exists(summary)) {

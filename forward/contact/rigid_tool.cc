@@ -165,8 +165,19 @@ std::vector<RigidTool> make_tools(const Scene& scene) {
         prof.push_back(segment({Ro, face + rho}, {Ro, face + rho + extent}, {-1.0, 0.0}));
         break;
       }
-      case ToolKind::kBlankHolder:
-        continue;  // a force on the flange, not a surface: see the model's holder handling
+      case ToolKind::kBlankHolder: {
+        // A force holder is not a surface (the model spreads its force over the flange). A
+        // fixed-gap holder is a flat face gap_mm below the die face, under the flange: from the
+        // start of the die's flat face (die radius + shoulder radius) outwards.
+        if (!(t.gap_mm > 0.0)) continue;
+        double inner = 0.0;
+        for (const ToolSpec& d : scene.tools) {
+          if (d.kind == ToolKind::kDie) inner = d.radius_mm + d.profile_radius_mm;
+        }
+        const double top = 0.5 * h0 - t.gap_mm;
+        prof.push_back(segment({inner, top}, {inner + extent, top}, {0.0, 1.0}));
+        break;
+      }
     }
     tools.emplace_back(t.name, t.kind, std::move(prof), vel, t.friction);
   }

@@ -70,8 +70,9 @@ class RigidTool {
 };
 
 // The surface tools of a scene (punch, die), positioned for a sheet of initial thickness h0 with
-// its mid-surface at z = 0; flat faces and walls extend a few blank radii. The blank holder is not
-// a surface: the model applies it as a force on the flange.
+// its mid-surface at z = 0; flat faces and walls extend a few blank radii. A force blank holder is
+// not a surface (the model applies it as a force on the flange); a fixed-gap holder is a flat face
+// gap_mm below the die face.
 std::vector<RigidTool> make_tools(const Scene& scene);
 
 }  // namespace vs

@@ -55,11 +55,13 @@ AxisymModel::AxisymModel(const Scene& scene)
   for (std::size_t i = 0; i < tools_.size(); ++i) {
     if (tools_[i].is_punch()) punch_ = static_cast<int>(i);
     if (tools_[i].kind() == ToolKind::kDie) die_ = static_cast<int>(i);
+    if (tools_[i].kind() == ToolKind::kBlankHolder) holder_ = static_cast<int>(i);
   }
   for (const ToolSpec& t : scene.tools) {
     if (t.kind == ToolKind::kBlankHolder) {
       has_holder_ = true;
       holder_force_ = t.force_N;
+      holder_gap_ = t.gap_mm;
       holder_friction_ = t.friction;
     }
   }
@@ -89,6 +91,7 @@ void AxisymModel::place_tools(const AxisymState& s) {
 void AxisymModel::freeze_material(const AxisymState& s, double dt_predicted) {
   // Midpoint rule for the hardening seen by the velocity solve.
   constexpr double kTheta = 0.5;
+  step_dt_ = dt_predicted;
   const std::size_t np = rule_.zeta.size();
   sigma_y_.assign(num_elements(), std::vector<double>(np));
   hardening_viscosity_.assign(num_elements(), std::vector<double>(np));
@@ -191,6 +194,13 @@ void AxisymModel::prescribed(const AxisymState& s, std::vector<char>* mask,
 }
 
 void AxisymModel::update_holder(AxisymState* s) const {
+  if (fixed_gap_holder()) {
+    for (int i = 0; i < num_nodes(); ++i) {
+      NodeContact& c = s->contact[i];
+      if (!in_gap(c)) c.holder_force_N = 0.0;
+    }
+    return;
+  }
   for (auto& c : s->contact) c.holder_force_N = 0.0;
   if (!has_holder_) return;
   double total_area = 0.0;
@@ -209,6 +219,31 @@ void AxisymModel::update_holder(AxisymState* s) const {
   }
 }
 
+void AxisymModel::update_sandwiched(AxisymState* s) const {
+  for (int i = 0; i < num_nodes(); ++i) {
+    NodeContact& c = s->contact[i];
+    c.sandwiched = fixed_gap_holder() && in_gap(c) &&
+                   node_thickness(*s, i) >= (1.0 - 1e-3) * holder_gap_;
+  }
+}
+
+std::vector<double> AxisymModel::holder_forces_from_gap(const AxisymState& s,
+                                                        const AxisymSystem& sys) const {
+  std::vector<double> f(num_nodes(), 0.0);
+  if (sys.gap_pressure.empty()) return f;
+  for (int e = 0; e < num_elements(); ++e) {
+    const double p = sys.gap_pressure[e];
+    if (p <= 0.0) continue;
+    const Axisym2Geometry g = geometry(s, e);
+    const double force = p * 2.0 * std::numbers::pi * g.mid_radius() * g.length();
+    // Shared by the element's nodes in the gap (one node at the holder edge takes it all).
+    const bool a = in_gap(s.contact[e]), b = in_gap(s.contact[e + 1]);
+    f[e] += a ? (b ? 0.5 : 1.0) * force : 0.0;
+    f[e + 1] += b ? (a ? 0.5 : 1.0) * force : 0.0;
+  }
+  return f;
+}
+
 void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
                                  double* stiff_secant, double* stiff_tangent,
                                  double* potential) const {
@@ -217,6 +252,13 @@ void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, 
   // Coulomb limit: tool coefficient times the lagged normal reaction, plus the holder's share.
   double limit = tool.friction() * std::max(c.normal_force_N, 0.0);
   if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
+  if (c.on_holder_face) limit += tools_[die_].friction() * c.holder_force_N;
+  // A flange node sandwiched in a fixed gap is never released: a tensile reaction on the face
+  // it touches is the opposite face pushing, with that face's friction.
+  if (sandwiched(c)) {
+    const double other = c.on_die_face ? holder_friction_ : tools_[die_].friction();
+    limit += other * std::max(-c.normal_force_N, 0.0);
+  }
   const double v0 = friction_velocity_;
   const double a = vt_rel / v0;
   const double at = std::atan(a);
@@ -294,6 +336,7 @@ void AxisymModel::evaluate_elements(const AxisymState& s, const Eigen::VectorXd&
                 out->cutoff_rates.begin() + np * e);
     }
   }
+  if (fixed_gap_holder()) add_gap_holder(s, v, want_k, out);
 }
 
 double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local,
@@ -301,7 +344,7 @@ double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_loc
   // As assemble(): element potential, minus the work of the holder forces (f_ext . v), plus the
   // friction potential of the sliding contact nodes.
   double p = sums.element_potential;
-  for (int i = 0; i < num_nodes(); ++i) p -= s.contact[i].holder_force_N * sums.v_global(3 * i + 1);
+  for (int i = 0; i < num_nodes(); ++i) p -= holder_load(s.contact[i]) * sums.v_global(3 * i + 1);
   for (int i = 0; i < num_nodes(); ++i) {
     const NodeContact& c = s.contact[i];
     if (c.tool < 0 || tools_[c.tool].sticking()) continue;
@@ -353,9 +396,9 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
   out->external_force.setZero(num_dofs());
   out->potential = out->element_potential;
   for (int i = 0; i < nn; ++i) {
-    out->external_force(3 * i + 1) += s.contact[i].holder_force_N;
+    out->external_force(3 * i + 1) += holder_load(s.contact[i]);
     // f_ext . v node by node, in the order of potential() (the same rounding).
-    out->potential -= s.contact[i].holder_force_N * v(3 * i + 1);
+    out->potential -= holder_load(s.contact[i]) * v(3 * i + 1);
   }
 
   // Residual and stiffness in the nodal frames.
@@ -399,6 +442,52 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
     if (!out->fixed[k]) continue;
     r(k) = 0.0;
     if (want_k) out->K.fix_dof(k / 3, k % 3);
+  }
+}
+
+void AxisymModel::add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v, bool want_k,
+                                 AxisymSystem* out) const {
+  // Fixed-gap blank holder on a flange element (both nodes on the die face). The plane-stress
+  // shell cannot carry a through-thickness stress, but a holder pressure p acts on the flow like
+  // a hydrostatic shift: both in-plane stresses change by -p, i.e. p does virtual power
+  // -p (d_s + d_t) per unit volume. The holder stops the thickness h (dh/dt = -(d_s + d_t) h) at
+  // the gap g: over the step dt, h_next = h exp(-(d_s + d_t) dt) <= g needs
+  //   d_s + d_t >= c = min(ln(h / g), 0) / dt.
+  // A penalty on the violation, potential k V (c - d_s - d_t)_+^2 / 2 with k = 1e3 times the
+  // element's reference viscosity, gives p = k (c - d_s - d_t)_+ (MPa) and keeps the constraint
+  // to ~1e-3 of the flow rate. V is the element volume.
+  constexpr double kPenalty = 1e3;
+  out->gap_pressure.assign(num_elements(), 0.0);
+  if (!(step_dt_ > 0.0)) return;
+  for (int e = 0; e < num_elements(); ++e) {
+    // Elements with at least one node in the gap: the element that straddles the holder's inner
+    // edge stays constrained until it has left completely (left free, it is squeezed between a
+    // node held by friction on both faces and a node running over the die shoulder, and folds:
+    // measured at gaps 1.1-1.15 mm).
+    if (!in_gap(s.contact[e]) && !in_gap(s.contact[e + 1])) continue;
+    const Axisym2Geometry g = geometry(s, e);
+    const Mat56 B = axisym2_B(g);
+    const Vec6 bv = (B.row(0) + B.row(1)).transpose();
+    const double rate = bv.dot(v.segment<6>(3 * e));
+    // No correction of an overshoot left by an earlier step (the penalty lets the thickness pass
+    // the gap by ~1e-3 of a step's strain): demanding it back within one step makes the required
+    // pressure grow without bound as cut-backs shrink dt.
+    const double c = std::min(0.0, std::log(s.thickness[e] / holder_gap_)) / step_dt_;
+    const double violation = c - rate;
+    if (violation <= 0.0) continue;
+    const double k = kPenalty * shear_viscosity_[e];
+    const double volume = 2.0 * std::numbers::pi * g.mid_radius() * g.length() * s.thickness[e];
+    const double p = k * violation;
+    out->gap_pressure[e] = p;
+    out->element_force.segment<6>(3 * e) -= p * volume * bv;
+    out->element_potential += 0.5 * k * volume * violation * violation;
+    if (want_k) {
+      // Linear in v: the same matrix in the secant and the tangent (part of K_elements).
+      const Mat6 kb = k * volume * bv * bv.transpose();
+      out->K_elements.diag(e) += kb.block<3, 3>(0, 0);
+      out->K_elements.diag(e + 1) += kb.block<3, 3>(3, 3);
+      out->K_elements.lower(e) += kb.block<3, 3>(3, 0);
+    }
   }
 }
 

@@ -26,8 +26,12 @@ struct NodeContact {
   int tool = -1;                                      // index into tools, -1 = free
   Eigen::Vector2d normal = Eigen::Vector2d::UnitY();  // from the tool into the sheet
   double normal_force_N = 0.0;  // lagged normal reaction (compressive > 0), full 360 degrees
-  double holder_force_N = 0.0;  // blank-holder share pressing this node against the die face
+  // Force holder: its share pressing this node against the die face. Fixed-gap holder: the
+  // gap pressure times the node's flange area, exerted by the face the node does not touch.
+  double holder_force_N = 0.0;
   bool on_die_face = false;     // touching the flat face of the die (the flange)
+  bool on_holder_face = false;  // touching a fixed-gap blank holder (the flange, from below)
+  bool sandwiched = false;      // fixed-gap flange node filling the gap (see AxisymModel)
 };
 
 // Everything that changes from step to step.
@@ -48,6 +52,9 @@ struct AxisymSystem {
   double potential = 0.0;          // flow potential (line-search merit); with kNone and kTangent
   Eigen::VectorXd element_force;   // f_el in the global frame (reactions = f_el - f_ext)
   Eigen::VectorXd external_force;  // f_ext in the global frame
+  // Fixed-gap blank holder: contact pressure on the flange per element [MPa] (0 where the flange
+  // is thinner than the gap); empty without a fixed-gap holder.
+  std::vector<double> gap_pressure;
   // Element sums of evaluate_elements() (global frame, before friction and prescribed dofs):
   // the stiffness, K_elements = secant with kSecant or split kTangent, secant + element_weight *
   // tangent part with a kTangent at a fixed weight; and the tangent part with a split kTangent.
@@ -110,8 +117,25 @@ class AxisymModel {
   // Prescribed local dofs and their values; free dofs have mask false.
   void prescribed(const AxisymState& s, std::vector<char>* mask, Eigen::VectorXd* values) const;
 
-  // Distributes the blank-holder force over the flange nodes on the die face.
+  // Distributes the blank-holder force over the flange nodes on the die face. With a fixed-gap
+  // holder the nodal forces come from the gap pressure instead (set_holder_forces_from_gap) and
+  // are only cleared at nodes that left the die face.
   void update_holder(AxisymState* s) const;
+  bool fixed_gap_holder() const { return holder_gap_ > 0.0; }
+  // Axial load of the holder on a node: a force holder and a gap holder's pressure push a node on
+  // the die face up (+z); a gap holder's die-side pressure pushes a node on the holder face down.
+  static double holder_load(const NodeContact& c) {
+    return c.on_holder_face ? -c.holder_force_N : c.holder_force_N;
+  }
+  // A node of the flange between the die face and a fixed-gap holder (touching either).
+  static bool in_gap(const NodeContact& c) { return c.on_die_face || c.on_holder_face; }
+  // A flange node of a fixed-gap holder that touches one face while its thickness fills the gap
+  // (within 0.1 %): it touches both faces, so the contact holds whatever the reaction's sign.
+  bool sandwiched(const NodeContact& c) const { return fixed_gap_holder() && c.sandwiched; }
+  void update_sandwiched(AxisymState* s) const;
+  // Fixed-gap holder: nodal holder forces (full 360 degrees) from the element gap pressures of
+  // `sys`, each element's pressure times its mid-surface area shared equally by its two nodes.
+  std::vector<double> holder_forces_from_gap(const AxisymState& s, const AxisymSystem& sys) const;
 
   // Evaluates at the local-frame velocity `v_local`.
   // kTangent blends secant and consistent tangent with `tangent_weight` in [0, 1]. The potential is
@@ -153,6 +177,9 @@ class AxisymModel {
   double node_thickness(const AxisymState& s, int node) const;
 
  private:
+  // Fixed-gap holder penalty on flange elements (see the .cc); fills out->gap_pressure.
+  void add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
+                      AxisymSystem* out) const;
   // v <- global-frame velocities of the local-frame v, in place.
   void rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const;
   void friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
@@ -166,8 +193,10 @@ class AxisymModel {
   std::vector<double> r0_, l0_, volume_;
   double nominal_rate_ = 1.0;        // punch speed / blank radius [1/s]
   double friction_velocity_ = 1e-4;  // arctan regularisation velocity [mm/s]
-  int punch_ = -1, die_ = -1;
+  int punch_ = -1, die_ = -1, holder_ = -1;  // holder_: fixed-gap holder surface
   double holder_force_ = 0.0, holder_friction_ = 0.0;
+  double holder_gap_ = 0.0;  // fixed-gap holder: gap to the die face [mm]; 0 = force holder
+  double step_dt_ = 0.0;     // step size the frozen material data were made for [s]
   bool has_holder_ = false;
   // Frozen per step.
   std::vector<std::vector<double>> sigma_y_;              // per element, per point

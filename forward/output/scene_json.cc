@@ -149,6 +149,7 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                    {"max_iterations", n.max_iterations},
                    {"step_fraction", n.step_fraction},
                    {"max_travel_increment_mm", n.max_travel_increment_mm},
+                   {"max_travel_increment_per_length", n.max_travel_increment_per_length},
                    {"max_strain_increment", n.max_strain_increment},
                    {"strain_rate_cutoff", n.strain_rate_cutoff},
                    {"friction_regularisation", n.friction_regularisation},

@@ -29,6 +29,9 @@ class AxisymStepProblem : public NonlinearProblem {
   void finish(const Eigen::VectorXd& x);
 
   double punch_force() const { return punch_force_; }
+  // Fixed-gap holder: nodal holder forces from the gap pressure at the last finish() (empty
+  // otherwise).
+  const std::vector<double>& holder_forces() const { return holder_forces_; }
   // Normal reaction of each contact node (compressive > 0) at the last finish().
   const std::vector<double>& normal_reactions() const { return normal_; }
   const std::vector<std::vector<double>>& point_rates() const { return point_rates_; }
@@ -77,6 +80,7 @@ class AxisymStepProblem : public NonlinearProblem {
   std::vector<Vec5> resultants_;
   // Adaptive relaxation of the lagged normal forces, per node.
   std::vector<double> relax_, last_change_;
+  std::vector<double> holder_forces_;
 };
 
 }  // namespace vs

@@ -28,6 +28,10 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+// Thickness limits relative to the initial thickness (see update_thickness).
+constexpr double kMinThicknessRatio = 0.05;
+constexpr double kMaxThicknessRatio = 3.0;
+
 // A converged configuration: state plus what the step control needs.
 struct Solved {
   AxisymState state;
@@ -53,7 +57,7 @@ class Driver {
     // contact events split grid intervals. The step sequence then moves continuously with the
     // material and friction parameters, which keeps outputs smooth for calibration.
     const double total = scene.process.punch_travel_mm;
-    const double inc = scene.numerics.max_travel_increment_mm;
+    const double inc = travel_increment();
     targets_ = scene.process.output_travels_mm;
     for (double tr = inc; tr < total * (1.0 - 1e-12); tr += inc) targets_.push_back(tr);
     targets_.push_back(total);
@@ -66,6 +70,15 @@ class Driver {
   RunResult run();
 
  private:
+  // Grid spacing of the step ends: the smaller of the absolute cap and the cap relative to the
+  // shortest initial element (the stability limit of the explicit geometry update).
+  double travel_increment() const {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int e = 0; e < model_.num_elements(); ++e)
+      shortest = std::min(shortest, model_.initial_length(e));
+    return std::min(scene_.numerics.max_travel_increment_mm,
+                    scene_.numerics.max_travel_increment_per_length * shortest);
+  }
   bool eligible(int node) const {
     return !(node == model_.num_nodes() - 1 && scene_.blank.edge != EdgeCondition::kFree);
   }
@@ -91,6 +104,11 @@ class Driver {
   double contact_tol_ = 0.0;    // gap below which a node touches a tool
   double attach_tol_ = 0.0;     // search tolerance next to a touching neighbour
   std::vector<char> released_;  // nodes released by the last solve (no immediate re-contact)
+  // A released node may not touch again before the punch has moved one grid increment further:
+  // without this hysteresis a node whose reaction hovers around zero attaches and releases at
+  // every step, and the contact-event step shrinks to nothing (measured: ex1, 40 elements,
+  // sticking, 0.037 mm grid: 20 000 steps stuck at 26.63 mm).
+  std::vector<double> hold_until_mm_;
   RunTimings timings_;
 };
 
@@ -104,6 +122,7 @@ void Driver::attach(AxisymState& s, int node, int tool) {
   nc.normal = c.normal;
   nc.normal_force_N = keep_force;
   nc.on_die_face = t.kind() == ToolKind::kDie && c.primitive == 0;
+  nc.on_holder_face = t.kind() == ToolKind::kBlankHolder;
   const double h = model_.node_thickness(s, node);
   Eigen::Vector2d x = c.point + 0.5 * h * c.normal;
   if (node == 0 && model_.initial_radius(0) == 0.0) {
@@ -119,10 +138,18 @@ void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released
   for (int i = 0; i < model_.num_nodes(); ++i) {
     if (!eligible(i)) continue;
     if (s.contact[i].tool >= 0) {
+      const RigidTool& t = model_.tools()[s.contact[i].tool];
+      // A node that has run past the inner edge of a fixed-gap holder's face leaves it (the
+      // closest point would be the edge itself, and re-attaching there would pin the node).
+      if (t.kind() == ToolKind::kBlankHolder && s.x[i].x() < t.profile().front().p0.x()) {
+        s.contact[i] = NodeContact{};
+        continue;
+      }
       attach(s, i, s.contact[i].tool);  // back onto the surface, normal refreshed
       continue;
     }
     if (!released.empty() && released[i]) continue;
+    if (!hold_until_mm_.empty() && travel(s) < hold_until_mm_[i]) continue;
     int best = -1;
     double best_gap = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < model_.tools().size(); ++t) {
@@ -151,6 +178,7 @@ void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released
 bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
   AxisymState& s = out->state;
   model_.place_tools(s);
+  model_.update_sandwiched(&s);
   model_.freeze_material(s, dt_predicted);
   released_.assign(model_.num_nodes(), 0);
   constexpr int kMaxRounds = 20;
@@ -185,7 +213,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     std::vector<int> release;
     for (int i = 0; i < model_.num_nodes(); ++i) {
       const int tool = s.contact[i].tool;
-      if (tool < 0) continue;
+      if (tool < 0 || model_.sandwiched(s.contact[i])) continue;
       const bool on_axis = i == 0 && model_.initial_radius(0) == 0.0;
       const bool next = same_tool(i + 1, tool);
       const bool prev = on_axis ? next : same_tool(i - 1, tool);
@@ -198,10 +226,24 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     for (int i : release) {
       s.contact[i] = NodeContact{};
       released_[i] = 1;
+      hold_until_mm_[i] = travel(s) + travel_increment();
     }
     const bool any = !release.empty();
     out->active_set_rounds = round + 1;
     if (!any) {
+      // Fixed-gap holder: the pressure of this converged state sets the holder forces (and so
+      // the friction on both flange faces) of the next solve. Coupling them inside the Newton
+      // iteration does not converge: friction depends on the pressure, the pressure on the draw-in
+      // velocity, and the loop gain is the penalty stiffness (measured: ex3 with a 1.04 mm gap
+      // stalled at |r|/|f| ~ 0.5 for any penalty from 1 to 1e3 reference viscosities). Lagging
+      // them by one converged state costs O(dt) in the friction force, small at the travel step
+      // the explicit geometry update needs anyway.
+      if (model_.fixed_gap_holder()) {
+        const std::vector<double>& hf = problem.holder_forces();
+        for (int i = 0; i < model_.num_nodes(); ++i) {
+          s.contact[i].holder_force_N = AxisymModel::in_gap(s.contact[i]) ? hf[i] : 0.0;
+        }
+      }
       out->punch_force = problem.punch_force();
       out->max_rate = problem.max_point_rate();
       out->point_rates = problem.point_rates();
@@ -239,6 +281,7 @@ double Driver::choose_dt(const Solved& from, double cap_factor,
   const AxisymState& s = from.state;
   for (int i = 0; i < model_.num_nodes(); ++i) {
     if (!eligible(i) || s.contact[i].tool >= 0 || released_[i]) continue;
+    if (travel(s) < hold_until_mm_[i]) continue;
     const Eigen::Vector2d v = s.v.segment<2>(3 * i);
     const double h = model_.node_thickness(s, i);
     for (const RigidTool& tool : model_.tools()) {
@@ -275,6 +318,19 @@ bool Driver::update_thickness(AxisymState& s, std::string* why) const {
     const double h = model_.element_volume(e) / area;
     if (!(h > 0.0) || !std::isfinite(h) || g.mid_radius() <= 0.0) {
       *why = fmt::format("element {} degenerated (thickness {:.3g} mm)", e, h);
+      return false;
+    }
+    // Beyond these a membrane-shell answer means nothing: thinning to 5 % is fracture (necking
+    // has long run away), thickening to 3x means the mesh is folding onto itself (measured: a
+    // cup whose flange locks in a fixed-gap holder tangles at the holder edge, h = 13 h0).
+    const double h0 = scene_.blank.thickness_mm;
+    if (h < kMinThicknessRatio * h0 || h > kMaxThicknessRatio * h0) {
+      *why = fmt::format(
+          "element {} (initial radius {:.3g} mm) reached thickness {:.3g} mm = {:.3g} x initial, "
+          "outside [{}, {}] x initial: {}",
+          e, model_.initial_mid_radius(e), h, h / h0, kMinThicknessRatio, kMaxThicknessRatio,
+          h < kMinThicknessRatio * h0 ? "the sheet has necked through (fracture)"
+                                      : "the mesh is folding onto itself");
       return false;
     }
     s.thickness[e] = h;
@@ -314,6 +370,8 @@ bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* w
 
 // Consecutive cut-back steps after which a run is stopped as collapsing.
 constexpr int kMaxStepsWithCutbacks = 25;
+// Consecutive steps without punch progress after which a run is stopped.
+constexpr int kMaxStalledSteps = 200;
 
 RunResult Driver::run() {
   const auto t_start = Clock::now();
@@ -331,10 +389,11 @@ RunResult Driver::run() {
   }
   Solved current;
   current.state = model_.initial_state();
+  hold_until_mm_.assign(model_.num_nodes(), -std::numeric_limits<double>::infinity());
   maintain_contacts(current.state, {});
   std::string why;
   const double V = scene_.process.punch_speed_mm_per_s;
-  if (!solve(&current, scene_.numerics.max_travel_increment_mm / V, &why)) {
+  if (!solve(&current, travel_increment() / V, &why)) {
     result.termination = Termination::kFailed;
     result.message = "the first step did not converge: " + why;
     result.profiles.push_back(make_profile(model_, current.state, 0.0, {}));
@@ -348,6 +407,7 @@ RunResult Driver::run() {
   double cap_factor = 1.0;
   int cutbacks_since_success = 0;
   int steps_with_cutbacks = 0;  // consecutive steps that needed a cut-back
+  int stalled_steps = 0;        // consecutive steps that did not advance the punch
   for (int step = 0;; ++step) {
     // Record the converged configuration.
     const double T = travel(current.state);
@@ -375,6 +435,7 @@ RunResult Driver::run() {
     Solved next;
     bool ok = false;
     cutbacks_since_success = 0;
+    const std::vector<double> holds_before = hold_until_mm_;
     while (!ok) {
       const auto t0 = Clock::now();
       const double dt = choose_dt(current, cap_factor, nullptr);
@@ -398,8 +459,21 @@ RunResult Driver::run() {
       cap_factor *= 0.5;
       // The released set belongs to `current`; a retry must not inherit the failed attempt's.
       released_.assign(model_.num_nodes(), 0);
+      hold_until_mm_ = holds_before;
     }
     cap_factor = std::min(1.0, 2.0 * cap_factor);
+    // Steps that do not advance the punch (contact events piling up at one instant) must not go
+    // on for ever: a run that cannot leave an instant stops with the reason.
+    stalled_steps = travel(next.state) - T < 1e-6 * travel_increment() ? stalled_steps + 1 : 0;
+    if (stalled_steps >= kMaxStalledSteps) {
+      result.termination = Termination::kFailed;
+      result.message = fmt::format(
+          "stopped at punch travel {:.4f} mm: {} consecutive steps advanced the punch by less than "
+          "1e-6 of the travel increment (contact events pile up at one instant)",
+          T, stalled_steps);
+      current = std::move(next);
+      break;
+    }
     steps_with_cutbacks = cutbacks_since_success > 0 ? steps_with_cutbacks + 1 : 0;
     if (steps_with_cutbacks >= kMaxStepsWithCutbacks) {
       // Every step fails at first and creeps on with tiny increments: the run would take for

@@ -101,7 +101,8 @@ struct ToolSpec {
   double profile_radius_mm = 5.0;   // flat-punch nose radius / die shoulder radius
   // Coulomb coefficient between this tool and the sheet; +infinity means sticking.
   double friction = 0.0;
-  double force_N = 0.0;             // blank holder: total (360 degree) holding force
+  double force_N = 0.0;             // blank holder: total (360 degree) holding force, or
+  double gap_mm = 0.0;              // blank holder: fixed gap to the die face (exactly one > 0)
   bool sticking() const { return friction == std::numeric_limits<double>::infinity(); }
 };
 
@@ -135,6 +136,11 @@ struct NumericsSpec {
   int max_iterations = 100;              // per step, before the step is cut back
   double step_fraction = 1.0;            // fraction of the contact-event step taken when far
   double max_travel_increment_mm = 0.25;  // cap on punch travel per step
+  // Second cap on the travel per step, relative to the shortest initial element length. The
+  // explicit (Heun) geometry update is stable only below a travel increment proportional to the
+  // element length: above it the deformation mechanism of nearly rigid free regions switches from
+  // step to step and outputs jitter by up to 1 % (experiments/06_step_stability).
+  double max_travel_increment_per_length = 0.025;
   double max_strain_increment = 0.02;    // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;      // cut-off rate, relative to punch_speed / blank radius
   double friction_regularisation = 1e-4; // Coulomb arctan velocity, relative to punch speed

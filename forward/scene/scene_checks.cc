@@ -67,6 +67,21 @@ void check_tools(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
                            "{} mm",
                            blank.radius_mm, tool_address(punch, "radius_mm"), punch.radius_mm));
   }
+  if (roles.holder != nullptr) {
+    const ToolSpec& h = *roles.holder;
+    if ((h.force_N > 0.0) == (h.gap_mm > 0.0)) {
+      where.fail(tool_address(h, "kind"),
+                 fmt::format("blank holder '{}' needs exactly one of force_N (prescribed force) "
+                             "and gap_mm (fixed gap)",
+                             h.name));
+    }
+    if (h.gap_mm > 0.0 && h.gap_mm < blank.thickness_mm) {
+      where.fail(tool_address(h, "gap_mm"),
+                 fmt::format("{} = {} must be >= blank.thickness_mm = {} mm (the holder may not "
+                             "crush the blank at the start)",
+                             tool_address(h, "gap_mm"), h.gap_mm, blank.thickness_mm));
+    }
+  }
   if (roles.die == nullptr) return;
   const ToolSpec& die = *roles.die;
   const double clearance_limit = punch.radius_mm + blank.thickness_mm;
@@ -137,6 +152,7 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "Exactly one punch (`hemispherical_punch` or `flat_punch`), at most one `die`, at most one "
       "`blank_holder`; a blank holder requires a die.",
       "Flat punch: `profile_radius_mm` < `radius_mm`.",
+      "Blank holder: exactly one of `force_N` and `gap_mm`; `gap_mm` >= blank `thickness_mm`.",
       "Blank `radius_mm` > punch `radius_mm`.",
       "Die clearance: die `radius_mm` > punch `radius_mm` + blank `thickness_mm`.",
       "With a die, the blank reaches it: blank `radius_mm` > die `radius_mm`.",

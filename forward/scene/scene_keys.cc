@@ -228,10 +228,17 @@ std::vector<KeySpec> build_keys() {
   add(make("tool", "friction", kFloat, float_field<&tool, &ToolSpec::friction>(), "",
            closed(0, kInf), "Coulomb coefficient with the sheet; inf or \"sticking\" = no slip."))
       .sticking_alias = true;
-  auto& force = add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N",
-                         open_above(0), "Total (360 degree) blank-holder force."));
-  force.required = true;
-  force.applies_to = {"blank_holder"};
+  add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N",
+           open_above(0),
+           "Blank holder with a prescribed total (360 degree) force, shared over the flange nodes "
+           "on the die face. Give either force_N or gap_mm."))
+      .applies_to = {"blank_holder"};
+  add(make("tool", "gap_mm", kFloat, float_field<&tool, &ToolSpec::gap_mm>(), "mm", open_above(0),
+           "Blank holder at a fixed gap from the die face (>= blank thickness): the flange may "
+           "thicken up to the gap; beyond it the holder presses back with whatever pressure keeps "
+           "the thickness at the gap (its friction acts on that pressure). Give either force_N or "
+           "gap_mm."))
+      .applies_to = {"blank_holder"};
 
   // [process]
   add(make("process", "punch_travel_mm", kFloat,
@@ -265,7 +272,16 @@ std::vector<KeySpec> build_keys() {
            open_closed(0, 1), "Fraction of the step to the next contact event taken."));
   add(make(nu, "max_travel_increment_mm", kFloat,
            float_field<&numerics, &NumericsSpec::max_travel_increment_mm>(), "mm", open_above(0),
-           "Cap on punch travel per step."));
+           "Cap on punch travel per step (steps end on a fixed grid of this spacing, or of the "
+           "next key's, whichever is smaller)."));
+  add(make(nu, "max_travel_increment_per_length", kFloat,
+           float_field<&numerics, &NumericsSpec::max_travel_increment_per_length>(), "",
+           open_above(0),
+           "Cap on punch travel per step relative to the shortest initial element length "
+           "(axisymmetric). The explicit geometry update is stable only below about 0.05; larger "
+           "values make load curves and strains jitter by up to 1 % "
+           "(experiments/06_step_stability)."))
+      .geometry = "axisymmetric";
   add(make(nu, "max_strain_increment", kFloat,
            float_field<&numerics, &NumericsSpec::max_strain_increment>(), "", open_closed(0, 0.5),
            "Cap on the effective strain increment per step."));

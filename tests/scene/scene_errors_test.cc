@@ -118,7 +118,17 @@ TEST(SceneErrors, ToolTablesNeedNameKindAndTheirRequiredKeys) {
   EXPECT_EQ(scene_error(kMinimalScene + "[[tool]]\nname = \"d\"\nkind = \"die\"\n"),
             "scene.toml:10:1: missing required key 'radius_mm' in [[tool]] 'd'");
   EXPECT_EQ(scene_error(kMinimalScene + kDie + "[[tool]]\nname = \"h\"\nkind = \"blank_holder\"\n"),
-            "scene.toml:15:1: missing required key 'force_N' in [[tool]] 'h'");
+            "scene.toml:17:8: blank holder 'h' needs exactly one of force_N (prescribed force) "
+            "and gap_mm (fixed gap)");
+  EXPECT_EQ(scene_error(kMinimalScene + kDie +
+                        "[[tool]]\nname = \"h\"\nkind = \"blank_holder\"\nforce_N = 10\n"
+                        "gap_mm = 2\n"),
+            "scene.toml:17:8: blank holder 'h' needs exactly one of force_N (prescribed force) "
+            "and gap_mm (fixed gap)");
+  EXPECT_EQ(scene_error(kMinimalScene + kDie +
+                        "[[tool]]\nname = \"h\"\nkind = \"blank_holder\"\ngap_mm = 0.5\n"),
+            "scene.toml:18:10: tool.h.gap_mm = 0.5 must be >= blank.thickness_mm = 0.85 mm (the "
+            "holder may not crush the blank at the start)");
   EXPECT_EQ(scene_error(kMinimalScene + "[[tool]]\nname = \"punch\"\n"),
             "scene.toml:11:8: duplicate tool name 'punch' (first used at scene.toml:6:8)");
   EXPECT_EQ(scene_error(kMinimalScene + "[[tool]]\nname = \"my die\"\n"),

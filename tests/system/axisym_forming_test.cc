@@ -66,17 +66,19 @@ TEST(AxisymForming, FrictionMovesTheThinnestPointOffThePoleAndOutward) {
   const RunResult r4 = Stretch("0.04");
   const RunResult r2 = Stretch("0.2");
   ASSERT_TRUE(r0.completed() && r4.completed() && r2.completed());
-  // No friction: the thinning is greatest on a plateau at the pole (the pole element is within
-  // 5% of the thinnest: measured 3.8%, 1.3%, 0.7% at 10, 20, 30 mm), unlike with friction below.
+  // No friction: the thinning is greatest on a flat plateau around the pole (the pole element is
+  // within 5% of the thinnest: measured 4.7%, 1.7%, 1.1% at 10, 20, 30 mm; the discrete maximum
+  // sits at r0 = 3.7-5.2 mm, inside the plateau), unlike with friction below.
+  constexpr double kPlateau_mm = 6.5;
   for (std::size_t k = 0; k < 3; ++k) {
     const Profile& p = r0.profiles[k];
     EXPECT_GT(p.eps_thickness.front() / p.eps_thickness[test::thinnest(p)], 0.95) << k;
-    EXPECT_LT(p.r0_mm[test::thinnest(p)], 5.0) << k;
+    EXPECT_LT(p.r0_mm[test::thinnest(p)], kPlateau_mm) << k;
   }
   // With friction the peak is off the pole; it lies further out for more friction...
   const Profile& p4 = r4.profiles[2];
   const Profile& p2 = r2.profiles[2];
-  EXPECT_GT(p4.r0_mm[test::thinnest(p4)], 5.0);
+  EXPECT_GT(p4.r0_mm[test::thinnest(p4)], kPlateau_mm);
   EXPECT_LT(p2.eps_thickness.front() / p2.eps_thickness[test::thinnest(p2)], 0.9);
   EXPECT_GT(p2.r0_mm[test::thinnest(p2)], p4.r0_mm[test::thinnest(p4)]);
   // ...and moves outward with travel (paper figs. 9-11).

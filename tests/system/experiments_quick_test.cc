@@ -60,6 +60,7 @@ TEST(ExperimentsQuick, WorkPrecisionErrorDecreasesWithRefinement) {
     o.setting = {"refined", k == 3 ? "L2" : fmt::format("c{}", k), base};
     o.setting.ov.push_back({"blank.elements", std::to_string(static_cast<int>(8 * f))});
     o.setting.ov.push_back({"numerics.max_travel_increment_mm", fmt::format("{}", 1.0 / f)});
+    o.setting.ov.push_back({"numerics.max_travel_increment_per_length", "1e9"});
     o.setting.ov.push_back({"numerics.max_strain_increment", fmt::format("{}", 0.04 / f)});
     o.run = run_once(make_scene(kEx1, o.setting.ov), kInf);
     ASSERT_TRUE(o.run.result.completed()) << o.run.result.message;

@@ -1,0 +1,152 @@
+// Stability of the explicit (Heun) geometry update against the travel step, measured as what a
+// calibration sees: how smoothly the outputs move when a parameter moves a little.
+//
+// For ex1 (hemispherical stretching, punch friction 0.1, R 1.5, 20 mm, tolerance 1e-8) and each
+// mesh and travel step (numerics.max_travel_increment_per_length, the step relative to the
+// element length), the punch friction is swept over 0.0990..0.1010 in 11 runs. For a smooth
+// forward map the outputs are nearly linear over such a small range; the experiment reports the
+// largest deviation from the least-squares line ("jitter") of the punch force at 10, 16 and 20 mm
+// and of the thickness strain at 20 mm, the roughness of one load-travel curve (rms second
+// difference on the 0.25 mm grid, relative to the mean increment), and the CPU time per run.
+//
+//   build/experiments/step_stability [--quick] [--out DIR]
+// (default DIR: experiments/06_step_stability/results/ of the source tree)
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/harness.h"
+
+namespace {
+
+double linear_fit_max_deviation(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sx += x[i];
+    sy += y[i];
+    sxx += x[i] * x[i];
+    sxy += x[i] * y[i];
+  }
+  const double b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double a = (sy - b * sx) / n;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::abs(y[i] - a - b * x[i]));
+  return worst;
+}
+
+// Punch force at `travel`, linear between the neighbouring steps (the step grid need not contain
+// the travel).
+double force_at(const vs::RunResult& r, double travel) {
+  for (std::size_t i = 1; i < r.steps.size(); ++i) {
+    const vs::StepRecord& a = r.steps[i - 1];
+    const vs::StepRecord& b = r.steps[i];
+    if (b.punch_travel_mm >= travel - 1e-12 && b.punch_travel_mm > a.punch_travel_mm) {
+      const double w = (travel - a.punch_travel_mm) / (b.punch_travel_mm - a.punch_travel_mm);
+      return (1.0 - w) * a.punch_force_N + w * b.punch_force_N;
+    }
+  }
+  return std::nan("");
+}
+
+// rms second difference of the force sampled every 0.25 mm between 5 and 20 mm, over the mean
+// increment (a smooth curve gives ~0.01).
+double roughness(const vs::RunResult& r) {
+  std::vector<double> f;
+  for (double t = 5.0; t <= 20.0 + 1e-9; t += 0.25) f.push_back(force_at(r, t));
+  double s2 = 0.0, inc = 0.0;
+  int n = 0;
+  for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+    const double d2 = f[i + 1] - 2.0 * f[i] + f[i - 1];
+    s2 += d2 * d2;
+    inc += f[i + 1] - f[i];
+    ++n;
+  }
+  return std::sqrt(s2 / n) / (inc / n);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string src = VS_SOURCE_DIR;
+  bool quick = false;
+  std::string out_dir = src + "/experiments/06_step_stability/results";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--quick") == 0) {
+      quick = true;
+    } else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
+      out_dir = argv[++i];
+    } else {
+      fmt::print(stderr, "usage: step_stability [--quick] [--out DIR]\n");
+      return 2;
+    }
+  }
+  std::filesystem::create_directories(out_dir);
+  const std::vector<int> meshes = quick ? std::vector<int>{24} : std::vector<int>{24, 48};
+  const std::vector<double> factors =
+      quick ? std::vector<double>{0.1, 0.025} : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
+  const int sweep = quick ? 5 : 11;
+  std::string md =
+      "| elements | step / element length | travel step (mm) | jitter F(10 mm) | jitter F(16 mm) "
+      "| jitter F(20 mm) | jitter eps_t,min(20 mm) | load roughness | CPU s per run |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
+  std::ofstream csv(out_dir + "/step_stability.csv");
+  csv << "elements,step_per_length,travel_step_mm,jitter_F10_rel,jitter_F16_rel,jitter_F20_rel,"
+         "jitter_eps_t_min20,load_roughness,cpu_s_per_run\n";
+  for (int el : meshes) {
+    for (double f : factors) {
+      std::vector<double> mu, f10, f16, f20, emin;
+      double rough = 0.0, cpu = 0.0, step_mm = 0.0;
+      for (int k = 0; k < sweep; ++k) {
+        const double m = 0.099 + 0.002 * k / (sweep - 1);
+        const vs::Scene scene = vsx::make_scene(
+            vsx::scene_path(src, "ex1_hemispherical_stretching"),
+            {{"blank.elements", std::to_string(el)},
+             {"process.punch_travel_mm", "20"},
+             {"process.output_travels_mm", "[10.0, 20.0]"},
+             {"material.r_value", "1.5"},
+             {"numerics.tolerance", "1e-8"},
+             {"numerics.max_travel_increment_per_length", fmt::format("{}", f)},
+             {"tool.punch.friction", fmt::format("{:.6f}", m)}});
+        step_mm = std::min(scene.numerics.max_travel_increment_mm,
+                           f * scene.blank.radius_mm / el);
+        const vsx::TimedRun run = vsx::run_once(scene, 600.0);
+        if (!run.result.completed()) {
+          fmt::print(stderr, "{} el, factor {}: run failed: {}\n", el, f, run.result.message);
+          continue;
+        }
+        cpu += run.cpu_s;
+        mu.push_back(m);
+        f10.push_back(force_at(run.result, 10.0));
+        f16.push_back(force_at(run.result, 16.0));
+        f20.push_back(force_at(run.result, 20.0));
+        const vs::Profile& p = run.result.profiles[1];
+        emin.push_back(*std::min_element(p.eps_thickness.begin(), p.eps_thickness.end()));
+        if (k == sweep / 2) rough = roughness(run.result);
+      }
+      if (mu.size() < 3) continue;
+      const double j10 = linear_fit_max_deviation(mu, f10) / f10.front();
+      const double j16 = linear_fit_max_deviation(mu, f16) / f16.front();
+      const double j20 = linear_fit_max_deviation(mu, f20) / f20.front();
+      const double je = linear_fit_max_deviation(mu, emin);
+      const double c = cpu / static_cast<double>(mu.size());
+      md += fmt::format("| {} | {} | {:.4f} | {:.3f}% | {:.3f}% | {:.3f}% | {:.1e} | {:.3f} | {:.2f} |\n",
+                        el, f, step_mm, 100 * j10, 100 * j16, 100 * j20, je, rough, c);
+      csv << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", el, f, step_mm,
+                         j10, j16, j20, je, rough, c);
+      fmt::print("{} elements, step/length {}: jitter F10 {:.3f}% F16 {:.3f}% F20 {:.3f}% "
+                 "eps {:.1e}, roughness {:.3f}, {:.2f} s/run\n",
+                 el, f, 100 * j10, 100 * j16, 100 * j20, je, rough, c);
+    }
+  }
+  std::ofstream(out_dir + "/summary.md") << md;
+  fmt::print("\n{}", md);
+  return 0;
+}
