@@ -23,56 +23,9 @@
 #include <vector>
 
 #include "common/harness.h"
+#include "common/step_stability.h"
 
-namespace {
 
-double linear_fit_max_deviation(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sx += x[i];
-    sy += y[i];
-    sxx += x[i] * x[i];
-    sxy += x[i] * y[i];
-  }
-  const double b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  const double a = (sy - b * sx) / n;
-  double worst = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) worst = std::max(worst, std::abs(y[i] - a - b * x[i]));
-  return worst;
-}
-
-// Punch force at `travel`, linear between the neighbouring steps (the step grid need not contain
-// the travel).
-double force_at(const vs::RunResult& r, double travel) {
-  for (std::size_t i = 1; i < r.steps.size(); ++i) {
-    const vs::StepRecord& a = r.steps[i - 1];
-    const vs::StepRecord& b = r.steps[i];
-    if (b.punch_travel_mm >= travel - 1e-12 && b.punch_travel_mm > a.punch_travel_mm) {
-      const double w = (travel - a.punch_travel_mm) / (b.punch_travel_mm - a.punch_travel_mm);
-      return (1.0 - w) * a.punch_force_N + w * b.punch_force_N;
-    }
-  }
-  return std::nan("");
-}
-
-// rms second difference of the force sampled every 0.25 mm between 5 and 20 mm, over the mean
-// increment (a smooth curve gives ~0.01).
-double roughness(const vs::RunResult& r) {
-  std::vector<double> f;
-  for (double t = 5.0; t <= 20.0 + 1e-9; t += 0.25) f.push_back(force_at(r, t));
-  double s2 = 0.0, inc = 0.0;
-  int n = 0;
-  for (std::size_t i = 1; i + 1 < f.size(); ++i) {
-    const double d2 = f[i + 1] - 2.0 * f[i] + f[i - 1];
-    s2 += d2 * d2;
-    inc += f[i + 1] - f[i];
-    ++n;
-  }
-  return std::sqrt(s2 / n) / (inc / n);
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const std::string src = VS_SOURCE_DIR;
@@ -124,18 +77,18 @@ int main(int argc, char** argv) {
         }
         cpu += run.cpu_s;
         mu.push_back(m);
-        f10.push_back(force_at(run.result, 10.0));
-        f16.push_back(force_at(run.result, 16.0));
-        f20.push_back(force_at(run.result, 20.0));
+        f10.push_back(vsx::force_at(run.result, 10.0));
+        f16.push_back(vsx::force_at(run.result, 16.0));
+        f20.push_back(vsx::force_at(run.result, 20.0));
         const vs::Profile& p = run.result.profiles[1];
         emin.push_back(*std::min_element(p.eps_thickness.begin(), p.eps_thickness.end()));
-        if (k == sweep / 2) rough = roughness(run.result);
+        if (k == sweep / 2) rough = vsx::load_roughness(run.result);
       }
       if (mu.size() < 3) continue;
-      const double j10 = linear_fit_max_deviation(mu, f10) / f10.front();
-      const double j16 = linear_fit_max_deviation(mu, f16) / f16.front();
-      const double j20 = linear_fit_max_deviation(mu, f20) / f20.front();
-      const double je = linear_fit_max_deviation(mu, emin);
+      const double j10 = vsx::linear_fit_max_deviation(mu, f10) / f10.front();
+      const double j16 = vsx::linear_fit_max_deviation(mu, f16) / f16.front();
+      const double j20 = vsx::linear_fit_max_deviation(mu, f20) / f20.front();
+      const double je = vsx::linear_fit_max_deviation(mu, emin);
       const double c = cpu / static_cast<double>(mu.size());
       md += fmt::format("| {} | {} | {:.4f} | {:.3f}% | {:.3f}% | {:.3f}% | {:.1e} | {:.3f} | {:.2f} |\n",
                         el, f, step_mm, 100 * j10, 100 * j16, 100 * j20, je, rough, c);
