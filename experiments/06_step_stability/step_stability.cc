@@ -23,24 +23,17 @@
 #include <vector>
 
 #include "common/harness.h"
+#include "common/table.h"
 #include "common/step_stability.h"
 
 
 
 int main(int argc, char** argv) {
   const std::string src = VS_SOURCE_DIR;
-  bool quick = false;
-  std::string out_dir = src + "/experiments/06_step_stability/results";
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) {
-      quick = true;
-    } else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
-      out_dir = argv[++i];
-    } else {
-      fmt::print(stderr, "usage: step_stability [--quick] [--out DIR]\n");
-      return 2;
-    }
-  }
+  const vsx::StudyArgs args =
+      vsx::parse_args(argc, argv, src + "/experiments/06_step_stability/results");
+  const bool quick = args.quick;
+  const std::string& out_dir = args.out_dir;
   std::filesystem::create_directories(out_dir);
   const std::vector<int> meshes = quick ? std::vector<int>{24} : std::vector<int>{24, 48};
   const std::vector<double> factors =

@@ -21,6 +21,7 @@
 
 #include "calibrate.h"
 #include "common/harness.h"
+#include "common/table.h"
 #include "default_forward_model.h"
 #include "synthetic.h"
 
@@ -52,18 +53,10 @@ vsx::Overrides common_edits() {
 
 int main(int argc, char** argv) {
   const std::string src = VS_SOURCE_DIR;
-  bool quick = false;
-  std::string out_dir = src + "/experiments/07_calibration_cost/results";
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--quick") == 0) {
-      quick = true;
-    } else if (std::strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
-      out_dir = argv[++i];
-    } else {
-      fmt::print(stderr, "usage: calibration_cost [--quick] [--out DIR]\n");
-      return 2;
-    }
-  }
+  const vsx::StudyArgs args =
+      vsx::parse_args(argc, argv, src + "/experiments/07_calibration_cost/results");
+  const bool quick = args.quick;
+  const std::string& out_dir = args.out_dir;
   std::filesystem::create_directories(out_dir);
   const std::string scene_path = vsx::scene_path(src, "ex1_hemispherical_stretching");
 
