@@ -18,6 +18,7 @@
 #include "model/axisym_model.h"
 #include "run/axisym_problem.h"
 #include "run/observe.h"
+#include "run/travel_grid.h"
 
 namespace vs {
 
@@ -56,15 +57,13 @@ class Driver {
     // Steps end on a fixed travel grid (multiples of the travel cap) and at the output travels;
     // contact events split grid intervals. The step sequence then moves continuously with the
     // material and friction parameters, which keeps outputs smooth for calibration.
-    const double total = scene.process.punch_travel_mm;
-    const double inc = travel_increment();
-    targets_ = scene.process.output_travels_mm;
-    for (double tr = inc; tr < total * (1.0 - 1e-12); tr += inc) targets_.push_back(tr);
-    targets_.push_back(total);
-    std::sort(targets_.begin(), targets_.end());
-    targets_.erase(std::unique(targets_.begin(), targets_.end(),
-                               [&](double a, double b) { return std::abs(a - b) <= 1e-9 * total; }),
-                   targets_.end());
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int e = 0; e < model_.num_elements(); ++e)
+      shortest = std::min(shortest, model_.initial_length(e));
+    grid_increment_mm_ = std::min(scene.numerics.max_travel_increment_mm,
+                                  scene.numerics.max_travel_increment_per_length * shortest);
+    targets_ = travel_grid(scene.process.punch_travel_mm, grid_increment_mm_,
+                           scene.process.output_travels_mm);
   }
 
   RunResult run();
@@ -72,13 +71,7 @@ class Driver {
  private:
   // Grid spacing of the step ends: the smaller of the absolute cap and the cap relative to the
   // shortest initial element (the stability limit of the explicit geometry update).
-  double travel_increment() const {
-    double shortest = std::numeric_limits<double>::infinity();
-    for (int e = 0; e < model_.num_elements(); ++e)
-      shortest = std::min(shortest, model_.initial_length(e));
-    return std::min(scene_.numerics.max_travel_increment_mm,
-                    scene_.numerics.max_travel_increment_per_length * shortest);
-  }
+  double travel_increment() const { return grid_increment_mm_; }
   bool eligible(int node) const {
     return !(node == model_.num_nodes() - 1 && scene_.blank.edge != EdgeCondition::kFree);
   }
@@ -101,6 +94,7 @@ class Driver {
   AxisymModel model_;
   NonlinearOptions nl_;
   std::vector<double> targets_;
+  double grid_increment_mm_ = 0.0;
   double contact_tol_ = 0.0;    // gap below which a node touches a tool
   double attach_tol_ = 0.0;     // search tolerance next to a touching neighbour
   std::vector<char> released_;  // nodes released by the last solve (no immediate re-contact)
@@ -257,22 +251,11 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
 
 double Driver::choose_dt(const Solved& from, double cap_factor,
                          std::vector<char>* /*released*/) const {
-  const double V = scene_.process.punch_speed_mm_per_s;
-  const double T = travel(from.state);
-  double dt_target = std::numeric_limits<double>::infinity();
-  for (double tr : targets_) {
-    if (tr > T * (1.0 + 1e-12) + 1e-12) {
-      dt_target = (tr - T) / V;
-      break;
-    }
-  }
-  // Strain cap: equal sub-steps to the next grid point; a cut-back divides further.
-  double cap = dt_target;
-  if (from.max_rate > 0.0) {
-    const double strain_dt = scene_.numerics.max_strain_increment / from.max_rate;
-    cap = dt_target / std::ceil(dt_target / strain_dt * (1.0 - 1e-12));
-  }
-  cap *= cap_factor;
+  // To the next grid point in equal strain-capped sub-steps; a cut-back divides further.
+  const double cap =
+      cap_factor * step_to_next_target(targets_, travel(from.state),
+                                       scene_.process.punch_speed_mm_per_s,
+                                       scene_.numerics.max_strain_increment, from.max_rate);
   // Next contact event (paper eq. 53, any tool, any free node), looked for a little beyond the
   // cap so that the step fraction can approach it gradually.
   const double frac = scene_.numerics.step_fraction;

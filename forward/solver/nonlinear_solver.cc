@@ -13,6 +13,16 @@ double relative(double num, double den) { return den > 0.0 ? num / den : num; }
 
 }  // namespace
 
+bool nonlinear_converged(const NonlinearOptions& options, const NonlinearSummary& sum,
+                         int iteration) {
+  const bool small_update = sum.update_norm <= options.tolerance;
+  const bool small_residual =
+      options.kind == SolverKind::kPicard || sum.residual_norm <= options.tolerance;
+  const bool stagnated =
+      sum.update_norm <= 1e-3 * options.tolerance && sum.residual_norm <= 100.0 * options.tolerance;
+  return ((small_update && small_residual) || stagnated) && iteration > 1;
+}
+
 NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptions& options,
                                  Eigen::VectorXd* x) {
   NonlinearSummary sum;
@@ -102,16 +112,7 @@ NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptio
                    sum.residual_norm, alpha);
     }
     problem.update_lagged(*x);
-    const bool small_update = sum.update_norm <= options.tolerance;
-    const bool small_residual =
-        options.kind == SolverKind::kPicard || sum.residual_norm <= options.tolerance;
-    // Round-off stagnation: the update has vanished (1e-3 of the tolerance) while the residual,
-    // limited by the conditioning of rigid zones, sits just above the tolerance: the iterate is
-    // as good as double precision allows (measured: ex3 sticking stalled at |dx|/|x| = 3e-17,
-    // |r|/|f| = 1.08e-6 with tolerance 1e-6).
-    const bool stagnated = sum.update_norm <= 1e-3 * options.tolerance &&
-                           sum.residual_norm <= 100.0 * options.tolerance;
-    if (((small_update && small_residual) || stagnated) && it > 1) {
+    if (nonlinear_converged(options, sum, it)) {
       sum.converged = true;
       sum.message = fmt::format("converged in {} iterations", it);
       return sum;

@@ -68,6 +68,15 @@ struct NonlinearSummary {
   std::string message;  // why it stopped
 };
 
+// The stopping test of every nonlinear solve (axisymmetric and 3D), on the norms of the latest
+// iteration `sum`: update and residual within the tolerance (Picard: update only), or round-off
+// stagnation: the update has vanished (1e-3 of the tolerance) while the residual, limited by the
+// conditioning of rigid zones, sits just above the tolerance (up to 100x): the iterate is as good
+// as double precision allows (measured: ex3 sticking stalled at |dx|/|x| = 3e-17,
+// |r|/|f| = 1.08e-6 with tolerance 1e-6). Never after the first iteration.
+bool nonlinear_converged(const NonlinearOptions& options, const NonlinearSummary& sum,
+                         int iteration);
+
 // x: start (prescribed values already set); on return, the last iterate.
 NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptions& options,
                                  Eigen::VectorXd* x);

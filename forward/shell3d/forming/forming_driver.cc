@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "run/travel_grid.h"
 #include "shell3d/forming/forming_model.h"
 #include "shell3d/forming/forming_step.h"
 
@@ -47,15 +48,8 @@ class Driver {
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
     nl_.verbose = options.verbose;
-    const double total = scene.process.punch_travel_mm;
-    const double inc = scene.numerics.max_travel_increment_mm;
-    targets_ = scene.process.output_travels_mm;
-    for (double tr = inc; tr < total * (1.0 - 1e-12); tr += inc) targets_.push_back(tr);
-    targets_.push_back(total);
-    std::sort(targets_.begin(), targets_.end());
-    targets_.erase(std::unique(targets_.begin(), targets_.end(),
-                               [&](double a, double b) { return std::abs(a - b) <= 1e-9 * total; }),
-                   targets_.end());
+    targets_ = travel_grid(scene.process.punch_travel_mm, scene.numerics.max_travel_increment_mm,
+                           scene.process.output_travels_mm);
   }
 
   Shell3dResult run();
@@ -226,21 +220,10 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
 
 double Driver::choose_dt(const Solved& from, double cap_factor) const {
   const auto t0 = Clock::now();
-  const double V = scene_.process.punch_speed_mm_per_s;
-  const double T = travel(from.state);
-  double dt_target = std::numeric_limits<double>::infinity();
-  for (double tr : targets_) {
-    if (tr > T * (1.0 + 1e-12) + 1e-12) {
-      dt_target = (tr - T) / V;
-      break;
-    }
-  }
-  double cap = dt_target;
-  if (from.max_rate > 0.0) {
-    const double strain_dt = scene_.numerics.max_strain_increment / from.max_rate;
-    cap = dt_target / std::ceil(dt_target / strain_dt * (1.0 - 1e-12));
-  }
-  cap *= cap_factor;
+  const double cap =
+      cap_factor * step_to_next_target(targets_, travel(from.state),
+                                       scene_.process.punch_speed_mm_per_s,
+                                       scene_.numerics.max_strain_increment, from.max_rate);
   // Next contact event (eqs. 81-85 corrected): every free node against every tool, in the
   // tool's meridian plane (r, z); the circumferential velocity does not change the gap of an
   // axisymmetric tool to first order.

@@ -134,12 +134,7 @@ NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
                    sum.residual_norm, alpha);
     }
     if (problem.update_lagged(*x)) have_eval = false;
-    const bool small_update = sum.update_norm <= options.tolerance;
-    const bool small_residual =
-        options.kind == vs::SolverKind::kPicard || sum.residual_norm <= options.tolerance;
-    const bool stagnated = sum.update_norm <= 1e-3 * options.tolerance &&
-                           sum.residual_norm <= 100.0 * options.tolerance;
-    if (((small_update && small_residual) || stagnated) && it > 1) {
+    if (nonlinear_converged(options, sum, it)) {
       sum.converged = true;
       sum.message = fmt::format("converged in {} iterations", it);
       return sum;
