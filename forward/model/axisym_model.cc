@@ -222,8 +222,8 @@ void AxisymModel::update_holder(AxisymState* s) const {
 void AxisymModel::update_sandwiched(AxisymState* s) const {
   for (int i = 0; i < num_nodes(); ++i) {
     NodeContact& c = s->contact[i];
-    c.sandwiched = fixed_gap_holder() && in_gap(c) &&
-                   node_thickness(*s, i) >= (1.0 - 1e-3) * holder_gap_;
+    c.sandwiched =
+        fixed_gap_holder() && in_gap(c) && node_thickness(*s, i) >= (1.0 - 1e-3) * holder_gap_;
   }
 }
 
@@ -244,13 +244,13 @@ std::vector<double> AxisymModel::holder_forces_from_gap(const AxisymState& s,
   return f;
 }
 
-void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
-                                 double* stiff_secant, double* stiff_tangent,
+void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, double normal_N,
+                                 double* force, double* stiff_secant, double* stiff_tangent,
                                  double* potential) const {
   const NodeContact& c = s.contact[node];
   const RigidTool& tool = tools_[c.tool];
-  // Coulomb limit: tool coefficient times the lagged normal reaction, plus the holder's share.
-  double limit = tool.friction() * std::max(c.normal_force_N, 0.0);
+  // Coulomb limit: tool coefficient times the normal reaction, plus the holder's share.
+  double limit = tool.friction() * std::max(normal_N, 0.0);
   if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
   if (c.on_holder_face) limit += tools_[die_].friction() * c.holder_force_N;
   // A flange node sandwiched in a fixed gap is never released: a tensile reaction on the face
@@ -351,7 +351,7 @@ double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_loc
     const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
     const double vt_rel = v_local(3 * i) - tools_[c.tool].velocity().dot(t);
     double f, ks, kt, phi;
-    friction_terms(s, i, vt_rel, &f, &ks, &kt, &phi);
+    friction_terms(s, i, vt_rel, c.normal_force_N, &f, &ks, &kt, &phi);
     p += phi;
   }
   return p;
@@ -385,6 +385,7 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
                                          : split || out->element_weight == tangent_weight));
   if (want_k) {
     if (out->K.blocks() != nn) out->K.resize(nn);
+    out->K.set_symmetric();
     for (int i = 0; i < nn; ++i) {
       out->K.diag(i) = out->K_elements.diag(i);
       if (blend) out->K.diag(i) += tangent_weight * out->K_tangent_part.diag(i);
@@ -428,13 +429,30 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
     if (c.tool < 0 || tools_[c.tool].sticking()) continue;
     const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
     const double vt_rel = v_local(3 * i) - tools_[c.tool].velocity().dot(t);
+    // Consistent friction: the limit follows the current normal reaction N(v) (the local normal
+    // component of the residual before friction), and Newton's matrix gets its derivative,
+    // d f / d v = mu psi(v_t) d N / d v with psi = f / limit: the normal row of node i, times
+    // mu psi, added to its tangential row (non-symmetric). The potential stays the lagged one (the
+    // step problem sets the lag to N at every evaluated iterate, so the line-search merit is the
+    // friction potential with N frozen at the iterate, whose gradient there is this residual).
+    const bool consistent = consistent_friction(c);
+    const double N_now = r(3 * i + 1);
     double f, ks, kt, phi;
-    friction_terms(s, i, vt_rel, &f, &ks, &kt, &phi);
+    friction_terms(s, i, vt_rel, consistent ? N_now : c.normal_force_N, &f, &ks, &kt, &phi);
     r(3 * i) += f;
     out->potential += phi;
     if (want_k) {
       out->K.diag(i)(0, 0) +=
           kind == StiffnessKind::kTangent ? ks + tangent_weight * (kt - ks) : ks;
+    }
+    if (want_k && consistent && kind == StiffnessKind::kTangent && N_now > 0.0) {
+      const double mu = tools_[c.tool].friction();
+      const double c_n = tangent_weight * mu * kTwoOverPi * std::atan(vt_rel / friction_velocity_);
+      out->K.unsymmetric();
+      Eigen::Matrix3d& D = out->K.diag(i);
+      D.row(0) += c_n * D.row(1);
+      if (i > 0) out->K.lower(i - 1).row(0) += c_n * out->K.lower(i - 1).row(1);
+      if (i + 1 < nn) out->K.upper(i).row(0) += c_n * out->K.upper(i).row(1);
     }
   }
   prescribed(s, &out->fixed, &out->fixed_values);

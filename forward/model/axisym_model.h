@@ -132,6 +132,13 @@ class AxisymModel {
   // A flange node of a fixed-gap holder that touches one face while its thickness fills the gap
   // (within 0.1 %): it touches both faces, so the contact holds whatever the reaction's sign.
   bool sandwiched(const NodeContact& c) const { return fixed_gap_holder() && c.sandwiched; }
+  // True if a contact node's tool friction follows its current normal reaction inside the Newton
+  // iteration (consistent tangent), false if it uses the lagged NodeContact::normal_force_N.
+  bool consistent_friction(const NodeContact& c) const {
+    return consistent_friction_ && !sandwiched(c);
+  }
+  void set_consistent_friction(bool on) { consistent_friction_ = on; }
+  bool consistent_friction() const { return consistent_friction_; }
   void update_sandwiched(AxisymState* s) const;
   // Fixed-gap holder: nodal holder forces (full 360 degrees) from the element gap pressures of
   // `sys`, each element's pressure times its mid-surface area shared equally by its two nodes.
@@ -182,7 +189,9 @@ class AxisymModel {
                       AxisymSystem* out) const;
   // v <- global-frame velocities of the local-frame v, in place.
   void rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const;
-  void friction_terms(const AxisymState& s, int node, double vt_rel, double* force,
+  // normal_N: the normal reaction that sets the tool's Coulomb limit (the lagged one, or the
+  // current one with consistent_friction()).
+  void friction_terms(const AxisymState& s, int node, double vt_rel, double normal_N, double* force,
                       double* stiff_secant, double* stiff_tangent, double* potential) const;
 
   Scene scene_;
@@ -193,6 +202,9 @@ class AxisymModel {
   std::vector<double> r0_, l0_, volume_;
   double nominal_rate_ = 1.0;        // punch speed / blank radius [1/s]
   double friction_velocity_ = 1e-4;  // arctan regularisation velocity [mm/s]
+  // Tool friction from the current normal reaction with its Newton derivative (default), or from
+  // the lagged one; the driver switches it off for a solve that does not converge with it.
+  bool consistent_friction_ = true;
   int punch_ = -1, die_ = -1, holder_ = -1;  // holder_: fixed-gap holder surface
   double holder_force_ = 0.0, holder_friction_ = 0.0;
   double holder_gap_ = 0.0;  // fixed-gap holder: gap to the die face [mm]; 0 = force holder

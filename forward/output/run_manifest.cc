@@ -21,6 +21,7 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
   j["steps"] = s.steps;
   j["total_iterations"] = s.total_iterations;
   j["total_cutbacks"] = s.total_cutbacks;
+  j["friction_fallbacks"] = s.friction_fallbacks;
   j["timings"] = {{"total_s", result.timings.total_s},
                   {"assembly_s", result.timings.assembly_s},
                   {"linear_solve_s", result.timings.linear_solve_s},

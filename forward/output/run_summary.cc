@@ -26,6 +26,7 @@ RunSummary summarize_run(const RunResult& result) {
   s.steps = static_cast<int>(result.steps.size());
   s.total_iterations = result.total_iterations;
   s.total_cutbacks = result.total_cutbacks;
+  s.friction_fallbacks = result.friction_fallbacks;
   s.total_time_s = result.timings.total_s;
   s.final_punch_travel_mm = kNaN;
   s.peak_punch_force_N = kNaN;
@@ -52,6 +53,10 @@ std::string summary_report(const RunSummary& s) {
   if (!s.message.empty()) out += fmt::format("\nmessage           {}", s.message);
   out += fmt::format("\nsteps             {} ({} iterations, {} cut-backs)", s.steps,
                      s.total_iterations, s.total_cutbacks);
+  if (s.friction_fallbacks > 0) {
+    out += fmt::format("\nfriction re-solves {} (solves redone with lagged normal reactions)",
+                       s.friction_fallbacks);
+  }
   if (s.steps > 0) {
     out += fmt::format("\nfinal travel      {:.3f} mm", s.final_punch_travel_mm);
     out += fmt::format("\npeak punch force  {:.4g} kN at {:.3f} mm travel",

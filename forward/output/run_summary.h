@@ -15,6 +15,7 @@ struct RunSummary {
   int steps = 0;
   int total_iterations = 0;
   int total_cutbacks = 0;
+  int friction_fallbacks = 0;
   // NaN when the run has no step.
   double final_punch_travel_mm = 0.0;
   double peak_punch_force_N = 0.0;

@@ -77,9 +77,7 @@ const char* name(SolverKind kind) {
   return "unknown";
 }
 
-const char* name(TimeIntegration t) {
-  return t == TimeIntegration::kHeun ? "heun" : "euler";
-}
+const char* name(TimeIntegration t) { return t == TimeIntegration::kHeun ? "heun" : "euler"; }
 
 Json tool_json(const ToolSpec& t) {
   Json j;

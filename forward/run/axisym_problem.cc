@@ -39,9 +39,19 @@ double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta, Block
   last_ = &sys == &slots_[0].sys ? 0 : 1;
   last_theta_ = theta;
   model_.assemble(*state_, x, kind, &sys, theta);
+  // Consistent friction: the residual used N(x); the lag becomes N(x) too, so that the line
+  // search's merit is the friction potential with N frozen at this iterate (its gradient here is
+  // the residual) and the trial points find the same N.
+  bool relagged = false;
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    NodeContact& c = state_->contact[i];
+    if (c.tool < 0 || !model_.consistent_friction(c)) continue;
+    c.normal_force_N = model_.node_force(sys, i).dot(c.normal);
+    relagged = true;
+  }
   std::swap(*K, sys.K);
   *residual = sys.residual;
-  *potential = sys.potential;
+  *potential = relagged ? model_.potential(*state_, x, sys) : sys.potential;
   return sys.element_force.norm();
 }
 
@@ -149,8 +159,15 @@ void AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
   }
   for (int i = 0; i < nn; ++i) {
     NodeContact& c = state_->contact[i];
+    if (c.tool >= 0 && model_.consistent_friction(c)) continue;  // set by evaluate()
     relaxed_update(n[i], &c.normal_force_N, &relax_[i], &last_change_[i]);
   }
+}
+
+void AxisymStepProblem::warm_start(const std::vector<double>& directions) {
+  if (directions.size() != dual_.size()) return;
+  dual_ = directions;
+  dual_id_ = next_id_++;
 }
 
 Eigen::VectorXd AxisymStepProblem::start(const Eigen::VectorXd& v_global) const {

@@ -25,6 +25,11 @@ class AxisymStepProblem : public NonlinearProblem {
 
   // Start vector: previous velocity in the current frames, prescribed values imposed.
   Eigen::VectorXd start(const Eigen::VectorXd& v_global) const;
+  // Start the flow directions at those of an earlier converged solve (warm start) instead of
+  // zero; ignored if the sizes differ (an empty vector keeps the zero start).
+  void warm_start(const std::vector<double>& directions);
+  // The flow directions of the current iterate (after the solve: the converged ones).
+  const std::vector<double>& directions() const { return dual_; }
   // Final evaluation at the converged local velocity: fills reactions and forces.
   void finish(const Eigen::VectorXd& x);
 

@@ -67,6 +67,9 @@ struct RunResult {
   std::vector<std::string> warnings;  // trust caveats (e.g. elements shorter than the thickness)
   int total_iterations = 0;
   int total_cutbacks = 0;
+  // Solves whose Newton iteration with friction consistent with the current normal reactions did
+  // not converge and that were redone with lagged reactions (see simulate.cc).
+  int friction_fallbacks = 0;
   RunTimings timings;
   bool completed() const { return termination == Termination::kCompleted; }
 };

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "model/axisym_model.h"
@@ -29,6 +30,8 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
+// Iterations allowed to a solve with consistent friction before it is redone with lagged friction.
+constexpr int kConsistentIterations = 30;
 // Thickness limits relative to the initial thickness (see update_thickness).
 constexpr double kMinThicknessRatio = 0.05;
 constexpr double kMaxThicknessRatio = 3.0;
@@ -42,12 +45,15 @@ struct Solved {
   std::vector<Vec5> resultants;
   NonlinearSummary summary;
   int active_set_rounds = 0;
+  // Flow directions of the converged solve (primal-dual unknowns), the next solve's start.
+  std::vector<double> directions;
 };
 
 class Driver {
  public:
   Driver(const Scene& scene, const RunOptions& options)
       : scene_(scene), options_(options), model_(scene) {
+    model_.set_consistent_friction(options.consistent_friction);
     contact_tol_ = 1e-8 * scene.blank.thickness_mm;
     attach_tol_ = 1e-2 * scene.blank.thickness_mm;
     nl_.kind = scene.numerics.solver;
@@ -104,6 +110,7 @@ class Driver {
   // sticking, 0.037 mm grid: 20 000 steps stuck at 26.63 mm).
   std::vector<double> hold_until_mm_;
   RunTimings timings_;
+  int friction_fallbacks_ = 0;  // solves redone with lagged friction
 };
 
 void Driver::attach(AxisymState& s, int node, int tool) {
@@ -178,22 +185,46 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
   constexpr int kMaxRounds = 20;
   for (int round = 0; round < kMaxRounds; ++round) {
     model_.update_holder(&s);
-    AxisymStepProblem problem(model_, &s);
-    Eigen::VectorXd x = problem.start(s.v);
+    std::optional<AxisymStepProblem> problem;
+    problem.emplace(model_, &s);
+    Eigen::VectorXd x = problem->start(s.v);
+    // Warm start: the flow directions of the previous converged solve (measured on ex1, 48
+    // elements, frictionless: 26 % fewer iterations than starting them at zero).
+    problem->warm_start(out->directions);
     const auto t0 = Clock::now();
-    out->summary = solve_nonlinear(problem, nl_, &x);
+    if (model_.consistent_friction()) {
+      // Friction consistent with the current normal reactions (quadratic convergence; measured
+      // on ex1, 48 elements, friction 0.2: 2.7x fewer iterations). At high friction its
+      // unsymmetric Newton can stall; then the step is solved again with the lagged, relaxed
+      // normal reactions, which converge to the same solution.
+      NonlinearOptions first = nl_;
+      first.max_iterations = std::min(nl_.max_iterations, kConsistentIterations);
+      out->summary = solve_nonlinear(*problem, first, &x);
+      if (!out->summary.converged) {
+        ++friction_fallbacks_;
+        model_.set_consistent_friction(false);
+        problem.emplace(model_, &s);
+        x = problem->start(s.v);
+        problem->warm_start(out->directions);
+        out->summary = solve_nonlinear(*problem, nl_, &x);
+        model_.set_consistent_friction(true);
+      }
+    } else {
+      out->summary = solve_nonlinear(*problem, nl_, &x);
+    }
     timings_.linear_solve_s += seconds_since(t0);
     if (!out->summary.converged) {
       *why = out->summary.message;
       return false;
     }
-    problem.finish(x);
+    problem->finish(x);
+    out->directions = problem->directions();
     s.v = model_.to_global(s, x);
     // Contact release: a node whose reaction pulls on the tool leaves it (active-set check). The
     // threshold ignores tensile reactions at round-off level of the largest contact force, which
     // would otherwise make a node touching with zero force chatter in and out.
     constexpr double kReleaseFraction = 1e-4;
-    const std::vector<double>& N = problem.normal_reactions();
+    const std::vector<double>& N = problem->normal_reactions();
     double scale = 0.0;
     for (int i = 0; i < model_.num_nodes(); ++i) scale = std::max(scale, std::abs(N[i]));
     // Only a node at the edge of its contact patch may separate, and only if its reaction,
@@ -233,15 +264,15 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
       // them by one converged state costs O(dt) in the friction force, small at the travel step
       // the explicit geometry update needs anyway.
       if (model_.fixed_gap_holder()) {
-        const std::vector<double>& hf = problem.holder_forces();
+        const std::vector<double>& hf = problem->holder_forces();
         for (int i = 0; i < model_.num_nodes(); ++i) {
           s.contact[i].holder_force_N = AxisymModel::in_gap(s.contact[i]) ? hf[i] : 0.0;
         }
       }
-      out->punch_force = problem.punch_force();
-      out->max_rate = problem.max_point_rate();
-      out->point_rates = problem.point_rates();
-      out->resultants = problem.resultants();
+      out->punch_force = problem->punch_force();
+      out->max_rate = problem->max_point_rate();
+      out->point_rates = problem->point_rates();
+      out->resultants = problem->resultants();
       return true;
     }
   }
@@ -322,6 +353,7 @@ bool Driver::update_thickness(AxisymState& s, std::string* why) const {
 }
 
 bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* why) {
+  to->directions = from.directions;
   if (scene_.numerics.time_integration == TimeIntegration::kEuler) {
     return advance(from, dt, &to->state, why) && solve(to, dt, why);
   }
@@ -330,6 +362,7 @@ bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* w
   // moving contact front by a whole step, which costs O(dt) in the strain distribution with a
   // large constant; the corrected update is second order.
   Solved pred;
+  pred.directions = from.directions;
   if (!advance(from, dt, &pred.state, why) || !solve(&pred, dt, why)) return false;
   Solved mid;
   mid.state = from.state;
@@ -348,6 +381,7 @@ bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* w
   }
   if (!update_thickness(to->state, why)) return false;
   to->state.v = pred.state.v;  // the best start for the corrected solve
+  to->directions = pred.directions;
   return solve(to, dt, why);
 }
 
@@ -382,6 +416,7 @@ RunResult Driver::run() {
     result.profiles.push_back(make_profile(model_, current.state, 0.0, {}));
     timings_.total_s = seconds_since(t_start);
     result.timings = timings_;
+    result.friction_fallbacks = friction_fallbacks_;
     return result;
   }
   const double total = scene_.process.punch_travel_mm;
@@ -432,6 +467,7 @@ RunResult Driver::run() {
         result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
         timings_.total_s = seconds_since(t_start);
         result.timings = timings_;
+        result.friction_fallbacks = friction_fallbacks_;
         return result;
       }
       if (options_.verbose) {
@@ -479,6 +515,7 @@ RunResult Driver::run() {
   }
   timings_.total_s = seconds_since(t_start);
   result.timings = timings_;
+  result.friction_fallbacks = friction_fallbacks_;
   return result;
 }
 

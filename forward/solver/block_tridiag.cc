@@ -1,5 +1,6 @@
 #include "solver/block_tridiag.h"
 
+#include <Eigen/LU>
 #include <cassert>
 #include <cmath>
 
@@ -10,11 +11,20 @@ void BlockTridiag::resize(int blocks) {
   lower_.assign(blocks > 0 ? blocks - 1 : 0, Block::Zero());
   pivot_.assign(blocks, Block::Zero());
   W_.assign(blocks, Block::Zero());
+  symmetric_ = true;
 }
 
 void BlockTridiag::set_zero() {
   for (auto& b : diag_) b.setZero();
   for (auto& b : lower_) b.setZero();
+  symmetric_ = true;
+}
+
+void BlockTridiag::unsymmetric() {
+  if (!symmetric_) return;
+  upper_.resize(lower_.size());
+  for (std::size_t i = 0; i < lower_.size(); ++i) upper_[i] = lower_[i].transpose();
+  symmetric_ = false;
 }
 
 void BlockTridiag::fix_dof(int i, int a) {
@@ -23,6 +33,10 @@ void BlockTridiag::fix_dof(int i, int a) {
   diag_[i](a, a) = 1.0;
   if (i > 0) lower_[i - 1].row(a).setZero();         // K(i, i-1) row a
   if (i + 1 < blocks()) lower_[i].col(a).setZero();  // K(i+1, i) column a
+  if (!symmetric_) {
+    if (i + 1 < blocks()) upper_[i].row(a).setZero();  // K(i, i+1) row a
+    if (i > 0) upper_[i - 1].col(a).setZero();         // K(i-1, i) column a
+  }
 }
 
 Eigen::VectorXd BlockTridiag::multiply(const Eigen::VectorXd& x) const {
@@ -32,7 +46,8 @@ Eigen::VectorXd BlockTridiag::multiply(const Eigen::VectorXd& x) const {
     y.segment<3>(3 * i) += diag_[i] * x.segment<3>(3 * i);
     if (i + 1 < n) {
       y.segment<3>(3 * (i + 1)) += lower_[i] * x.segment<3>(3 * i);
-      y.segment<3>(3 * i) += lower_[i].transpose() * x.segment<3>(3 * (i + 1));
+      y.segment<3>(3 * i) +=
+          (symmetric_ ? Block(lower_[i].transpose()) : upper_[i]) * x.segment<3>(3 * (i + 1));
     }
   }
   return y;
@@ -81,7 +96,26 @@ Eigen::Vector3d upper_solve(const Block& F, const Eigen::Vector3d& y) {
 
 }  // namespace
 
+bool BlockTridiag::factorize_unsymmetric() {
+  // Block LU: U_0 = K_00, W_i = K(i, i-1) U_(i-1)^-1, U_i = K_ii - W_i K(i-1, i).
+  const int n = blocks();
+  pivot_inverse_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    Block U = diag_[i];
+    if (i > 0) {
+      W_[i].noalias() = lower_[i - 1] * pivot_inverse_[i - 1];
+      U.noalias() -= W_[i] * upper_[i - 1];
+    }
+    const Block S = 0.5 * (U + U.transpose());
+    if (!cholesky3(S, &pivot_[i])) return false;
+    pivot_inverse_[i] = U.inverse();
+    if (!pivot_inverse_[i].allFinite()) return false;
+  }
+  return true;
+}
+
 bool BlockTridiag::factorize() {
+  if (!symmetric_) return factorize_unsymmetric();
   // Block elimination: P_0 = K_00; with C = K(i, i-1) and Y = L_(i-1)^-1 C^T,
   //   W_i = C P_(i-1)^-1 = (L_(i-1)^-T Y)^T,  P_i = K_ii - W_i C^T = K_ii - Y^T Y.
   const int n = blocks();
@@ -114,6 +148,14 @@ void BlockTridiag::solve_in_place(Eigen::VectorXd* b) const {
   for (int i = 1; i < n; ++i) {
     const Eigen::Vector3d prev = y.segment<3>(3 * (i - 1));
     y.segment<3>(3 * i) -= W_[i] * prev;
+  }
+  if (!symmetric_) {
+    for (int i = n - 1; i >= 0; --i) {
+      Eigen::Vector3d rhs = y.segment<3>(3 * i);
+      if (i + 1 < n) rhs -= upper_[i] * y.segment<3>(3 * (i + 1));
+      y.segment<3>(3 * i) = pivot_inverse_[i] * rhs;
+    }
+    return;
   }
   for (int i = n - 1; i >= 0; --i) {
     Eigen::Vector3d rhs = y.segment<3>(3 * i);

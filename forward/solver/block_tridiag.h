@@ -1,6 +1,10 @@
-// Symmetric block-tridiagonal matrix with 3x3 blocks: the exact structure of the axisymmetric
-// meridian chain (node i couples only to i-1 and i+1). Factorised by block LDL^T in O(n) with a
-// Cholesky of every pivot block, which doubles as the positive-definiteness check. The 3x3 kernels
+// Block-tridiagonal matrix with 3x3 blocks: the exact structure of the axisymmetric meridian chain
+// (node i couples only to i-1 and i+1). Symmetric by default (only the lower blocks stored),
+// factorised by block LDL^T in O(n) with a Cholesky of every pivot block, which doubles as the
+// positive-definiteness check. A Newton matrix with a non-symmetric part (Coulomb friction
+// proportional to the current normal reaction) is made unsymmetric() and factorised by block LU,
+// with every pivot block's symmetric part required positive definite (the same check, applied to
+// a matrix that is SPD up to the small friction coupling). The 3x3 kernels
 // are written out (block_tridiag.cc): Eigen's LLT solve with a matrix right-hand side goes through
 // its dynamic-size triangular solver, which costs more than the arithmetic at this size.
 #pragma once
@@ -21,9 +25,16 @@ class BlockTridiag {
 
   Block& diag(int i) { return diag_[i]; }
   const Block& diag(int i) const { return diag_[i]; }
-  // Coupling block K(i+1, i); K(i, i+1) is its transpose.
+  // Coupling block K(i+1, i); K(i, i+1) is its transpose while the matrix is symmetric.
   Block& lower(int i) { return lower_[i]; }
   const Block& lower(int i) const { return lower_[i]; }
+  // From now on (until set_zero(), resize() or set_symmetric()) the upper blocks K(i, i+1) are
+  // stored apart, starting as the transposes of the lower ones.
+  void unsymmetric();
+  void set_symmetric() { symmetric_ = true; }
+  bool symmetric() const { return symmetric_; }
+  // Coupling block K(i, i+1) of an unsymmetric() matrix.
+  Block& upper(int i) { return upper_[i]; }
 
   // Replaces row and column of dof (block i, component a) by the identity.
   void fix_dof(int i, int a);
@@ -39,11 +50,15 @@ class BlockTridiag {
   void solve_in_place(Eigen::VectorXd* b) const;
 
  private:
-  std::vector<Block> diag_, lower_;
+  bool factorize_unsymmetric();
+  std::vector<Block> diag_, lower_, upper_;
+  bool symmetric_ = true;
   // Cholesky factor L of every pivot block P_i = L L^T (lower triangle; the diagonal holds
   // 1 / L(a, a)).
   std::vector<Block> pivot_;
   std::vector<Block> W_;  // W_i = lower(i-1) * P_(i-1)^-1
+  // Unsymmetric: inverses of the LU pivot blocks U_i (W_i = K(i, i-1) U_(i-1)^-1 as above).
+  std::vector<Block> pivot_inverse_;
 };
 
 }  // namespace vs

@@ -55,5 +55,44 @@ TEST(BlockTridiag, ReportsIndefiniteMatrices) {
   EXPECT_FALSE(K.factorize());
 }
 
+TEST(BlockTridiag, UnsymmetricSolvesLikeADenseLU) {
+  // A symmetric positive definite chain plus a non-symmetric part in some rows (as the friction
+  // coupling adds): block LU against a dense LU, with a fixed dof.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 6;
+  BlockTridiag K(n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::Matrix3d A;
+    for (int a = 0; a < 9; ++a) A(a / 3, a % 3) = u(rng);
+    K.diag(i) = A * A.transpose() + 8.0 * Eigen::Matrix3d::Identity();
+    if (i + 1 < n) {
+      for (int a = 0; a < 9; ++a) K.lower(i)(a / 3, a % 3) = u(rng);
+    }
+  }
+  K.unsymmetric();
+  EXPECT_FALSE(K.symmetric());
+  for (int i = 0; i + 1 < n; i += 2) {
+    K.diag(i).row(0) += 0.3 * K.diag(i).row(1);
+    K.upper(i).row(0) += 0.3 * K.upper(i).row(1);
+    if (i > 0) K.lower(i - 1).row(0) += 0.3 * K.lower(i - 1).row(1);
+  }
+  K.fix_dof(3, 2);
+  Eigen::MatrixXd D(3 * n, 3 * n);
+  for (int j = 0; j < 3 * n; ++j) D.col(j) = K.multiply(Eigen::VectorXd::Unit(3 * n, j));
+  EXPECT_GT((D - D.transpose()).norm(), 0.1);
+  EXPECT_EQ(D.row(3 * 3 + 2).norm(), 1.0);  // fixed: identity row and column
+  EXPECT_EQ(D.col(3 * 3 + 2).norm(), 1.0);
+  Eigen::VectorXd b(3 * n);
+  for (int i = 0; i < 3 * n; ++i) b(i) = u(rng);
+  ASSERT_TRUE(K.factorize());
+  const Eigen::VectorXd x = K.solve(b);
+  const Eigen::VectorXd dense = Eigen::PartialPivLU<Eigen::MatrixXd>(D).solve(b);
+  EXPECT_NEAR((x - dense).norm(), 0.0, 1e-12 * dense.norm());
+  // Back to symmetric storage: the lower blocks alone define the matrix again.
+  K.set_zero();
+  EXPECT_TRUE(K.symmetric());
+}
+
 }  // namespace
 }  // namespace vs

@@ -125,6 +125,35 @@ TEST(AxisymForming, DeterministicBitForBit) {
   EXPECT_EQ(a.profiles.back().thickness_mm, b.profiles.back().thickness_mm);
 }
 
+TEST(AxisymForming, ConsistentFrictionGivesTheLaggedAnswerInFewerIterations) {
+  // Friction from the current normal reactions with their Newton derivative, against the lagged
+  // and relaxed reactions: the same converged solutions (to the solver tolerance, 1e-6), with
+  // fewer iterations (measured: 2.7x at 48 elements, friction 0.2, 30 mm).
+  const Scene scene = load_with(kStretch, {{"tool.punch.friction", "0.2"},
+                                           {"blank.elements", "24"},
+                                           {"output.history", "false"},
+                                           {"process.punch_travel_mm", "10"},
+                                           {"process.output_travels_mm", "[5.0, 10.0]"}});
+  RunOptions lagged;
+  lagged.consistent_friction = false;
+  const RunResult a = simulate(scene, lagged);
+  const RunResult b = simulate(scene);
+  ASSERT_TRUE(a.completed() && b.completed()) << a.message << b.message;
+  ASSERT_EQ(a.steps.size(), b.steps.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.steps.size(); ++i) {
+    worst = std::max(worst, std::abs(a.steps[i].punch_force_N - b.steps[i].punch_force_N));
+  }
+  EXPECT_LT(worst, 1e-4 * test::peak_force(a));
+  const Profile& pa = a.profiles.back();
+  const Profile& pb = b.profiles.back();
+  for (std::size_t e = 0; e < pa.eps_thickness.size(); ++e) {
+    EXPECT_NEAR(pa.eps_thickness[e], pb.eps_thickness[e], 1e-5) << e;
+  }
+  EXPECT_LT(b.total_iterations, 0.7 * a.total_iterations);
+  EXPECT_EQ(a.friction_fallbacks, 0);
+}
+
 TEST(AxisymForming, FailureStopsWithAMessageAndKeepsTheSteps) {
   // Two iterations per step cannot converge: the run must stop cleanly, not crash or loop.
   const RunResult r =
