@@ -7,18 +7,33 @@
 //   shell3d_benchmark [--divisions 4,8,16] [--rules mitc9,paper_selective] [--friction F]
 //                     [--travel MM] [--outputs A,B,C] [--increment MM] [--axisym-elements N]
 //                     [--scene FILE] [--csv FILE]
+//
+// Report study (experiments/REPORT.md, run by experiments/run_all.sh): with --out DIR and/or
+// --quick it runs the work-precision study of experiments/common/shell3d_study.h instead and
+// writes DIR/shell3d_study.csv, DIR/summary.md and DIR/shell3d_work_precision.svg (DIR defaults
+// to results/ next to this file); --summarise DIR regenerates the summary and the figure from
+// DIR/shell3d_study.csv without running anything.
+//   shell3d_benchmark [--quick] [--out DIR]
+//   shell3d_benchmark --summarise DIR
 #include <fmt/format.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/harness.h"
+#include "common/shell3d_study.h"
+#include "common/table.h"
+#include "output/svg_plot.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "shell3d/forming/axisym_comparison.h"
@@ -50,13 +65,32 @@ struct Args {
   double increment = 0.0;
   int axisym_elements = 60;
   std::string csv;
+  bool study = false;  // --quick or --out: the report study
+  bool quick = false;
+  std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
+  std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
 
 Args parse(int argc, char** argv) {
   Args a;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--scene") {
+  for (int i = 1; i < argc; i += 2) {
+    const std::string key = argv[i];
+    if (key == "--quick") {
+      a.study = a.quick = true;
+      --i;  // no value
+      continue;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "option %s needs a value\n", key.c_str());
+      std::exit(2);
+    }
+    const std::string value = argv[i + 1];
+    if (key == "--summarise") {
+      a.summarise_dir = value;
+    } else if (key == "--out") {
+      a.study = true;
+      a.out_dir = value;
+    } else if (key == "--scene") {
       a.scene = value;
     } else if (key == "--divisions") {
       a.divisions.clear();
@@ -83,10 +117,135 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
+// Work-precision figure from the study's CSV: largest |mean-force deviation| and largest |d eps_t|
+// against CPU time, one line per element rule (log-log), with the reference noise dashed.
+bool write_study_figure(const std::string& dir) {
+  vsx::Shell3dMeta meta;
+  std::vector<vsx::Shell3dRow> rows;
+  if (!vsx::read_shell3d_csv(dir + "/shell3d_study.csv", &meta, &rows)) return false;
+  vs::SvgFigure fig;
+  fig.title = "3D quarter disc against the axisymmetric solver: error against CPU time";
+  fig.x_label = "log10(CPU time [s])";
+  fig.y_label = "log10(largest deviation: force relative, eps_t absolute)";
+  std::vector<std::string> rules;
+  double noise_force = std::nan(""), noise_eps = std::nan("");
+  double xmin = 1e300, xmax = -1e300;
+  for (const auto& r : rows) {
+    if (r.c.rule == "axisymmetric") {
+      noise_force = r.dev.max_abs_mean_force;
+      noise_eps = r.dev.max_eps_thickness;
+    } else if (r.c.rule != "axisymmetric_reference" && r.completed && r.dev.travels > 0) {
+      if (std::find(rules.begin(), rules.end(), r.c.rule) == rules.end()) rules.push_back(r.c.rule);
+      xmin = std::min(xmin, std::log10(r.cpu_s));
+      xmax = std::max(xmax, std::log10(r.cpu_s));
+    }
+  }
+  int colour = 0;
+  for (const std::string& rule : rules) {
+    vs::PlotSeries force{
+        rule + ": |mean-force deviation|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+    vs::PlotSeries eps{rule + ": |d eps_t|", {}, {}, vs::SeriesStyle::kLineAndMarkers};
+    force.colour = eps.colour = colour++;
+    eps.dashed = true;
+    for (const auto& r : rows) {
+      if (r.c.rule != rule || !r.completed || r.dev.travels == 0) continue;
+      force.x.push_back(std::log10(r.cpu_s));
+      force.y.push_back(std::log10(std::max(r.dev.max_abs_mean_force, 1e-6)));
+      eps.x.push_back(std::log10(r.cpu_s));
+      eps.y.push_back(std::log10(std::max(r.dev.max_eps_thickness, 1e-6)));
+    }
+    fig.series.push_back(force);
+    fig.series.push_back(eps);
+  }
+  if (xmin <= xmax) {
+    vs::PlotSeries nf{"reference noise, force", {xmin, xmax}, {}, vs::SeriesStyle::kLine};
+    vs::PlotSeries ne{"reference noise, eps_t", {xmin, xmax}, {}, vs::SeriesStyle::kLine};
+    nf.y = {std::log10(noise_force), std::log10(noise_force)};
+    ne.y = {std::log10(noise_eps), std::log10(noise_eps)};
+    nf.colour = ne.colour = colour;
+    ne.dashed = true;
+    fig.series.push_back(nf);
+    fig.series.push_back(ne);
+  }
+  vs::write_svg(fig, dir + "/shell3d_work_precision.svg");
+  return true;
+}
+
+// The report study: reference, reference noise, every case; CSV and summary.md in args.out_dir.
+int run_study(const Args& args) {
+  const vsx::Shell3dStudy study = vsx::shell3d_study(VS_SOURCE_DIR, args.quick);
+  std::filesystem::create_directories(args.out_dir);
+  vsx::Shell3dMeta meta;
+  meta.scene = study.scene_path.substr(study.scene_path.find_last_of('/') + 1);
+  meta.friction = study.friction;
+  meta.load_average = vsx::load_average();
+  const vs::Scene base = vsx::shell3d_base_scene(study);
+  const vsx::AxisymRun ref = vsx::run_axisym_twin(base, study.axisym_elements);
+  const vsx::AxisymRun check = vsx::run_axisym_twin(base, study.axisym_check_elements);
+  if (!ref.result.completed() || !check.result.completed()) {
+    std::fprintf(stderr, "axisymmetric reference failed: %s %s\n", ref.result.message.c_str(),
+                 check.result.message.c_str());
+    return 1;
+  }
+  std::vector<vsx::Shell3dRow> rows = {
+      vsx::axisym_row("axisymmetric", check,
+                      vsx::compare_axisym(study.outputs_mm, check.result, ref.result)),
+      vsx::axisym_row("axisymmetric_reference", ref,
+                      vsx::compare_axisym(study.outputs_mm, ref.result, ref.result))};
+  std::printf(
+      "# 3D study%s: %s, friction %s, travel %g mm; reference %d elements (%.2f s); noise "
+      "vs %d elements: max |dF mean| %.2f %%, max |d eps_t| %.4f\n",
+      args.quick ? " (quick)" : "", meta.scene.c_str(), study.friction.c_str(), study.travel_mm,
+      study.axisym_elements, ref.wall_s, study.axisym_check_elements,
+      100.0 * rows[0].dev.max_abs_mean_force, rows[0].dev.max_eps_thickness);
+  const std::string csv_path = args.out_dir + "/shell3d_study.csv";
+  std::ofstream csv(csv_path);
+  csv << vsx::kShell3dCsvHeader << vsx::shell3d_csv_lines(meta, rows[0])
+      << vsx::shell3d_csv_lines(meta, rows[1]);
+  for (const vsx::Shell3dCase& c : study.cases) {
+    rows.push_back(vsx::run_shell3d_case(base, c, ref.result));
+    const vsx::Shell3dRow& r = rows.back();
+    csv << vsx::shell3d_csv_lines(meta, r) << std::flush;
+    std::printf(
+        "%-15s n=%-2d %4d el %6d dofs %8.2f s wall %8.2f s CPU %4d steps %5d iters: dF "
+        "%+.2f %%, dF mean %+.2f %%, max |dF| %.2f %%, max |dF mean| %.2f %%, max |d "
+        "eps_t| %.4f%s\n",
+        c.rule.c_str(), c.divisions, r.elements, r.dofs, r.wall_s, r.cpu_s, r.steps, r.iterations,
+        100.0 * r.dev.force_at_travel, 100.0 * r.dev.mean_force_at_travel,
+        100.0 * r.dev.max_abs_force, 100.0 * r.dev.max_abs_mean_force, r.dev.max_eps_thickness,
+        r.completed ? "" : ("  FAILED: " + r.message).c_str());
+    std::fflush(stdout);
+  }
+  csv.close();
+  // The summary from the CSV as written (the report regenerates it the same way).
+  const std::string md = vsx::shell3d_summary_from_csv(csv_path);
+  if (md.empty()) {
+    std::fprintf(stderr, "cannot read back %s\n", csv_path.c_str());
+    return 1;
+  }
+  vsx::write_text(args.out_dir + "/summary.md", md);
+  write_study_figure(args.out_dir);
+  std::printf("wrote %s, summary.md and shell3d_work_precision.svg\n\n%s", csv_path.c_str(),
+              md.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
+  if (!args.summarise_dir.empty()) {
+    const std::string md = vsx::shell3d_summary_from_csv(args.summarise_dir + "/shell3d_study.csv");
+    if (md.empty()) {
+      std::fprintf(stderr, "cannot read %s/shell3d_study.csv\n", args.summarise_dir.c_str());
+      return 1;
+    }
+    vsx::write_text(args.summarise_dir + "/summary.md", md);
+    write_study_figure(args.summarise_dir);
+    std::printf("%s", md.c_str());
+    return 0;
+  }
+  if (args.study) return run_study(args);
   vs::Scene base = vs::load_scene(args.scene);
   if (args.travel > 0.0) base.process.punch_travel_mm = args.travel;
   if (!args.outputs.empty()) base.process.output_travels_mm = args.outputs;

@@ -5,13 +5,18 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "../../experiments/common/calibration_cost.h"
 #include "../../experiments/common/harness.h"
 #include "../../experiments/common/metrics.h"
 #include "../../experiments/common/stability_cases.h"
 #include "../../experiments/common/step_stability.h"
 #include "../../experiments/common/work_precision.h"
+#ifdef VS_HAVE_SHELL3D
+#include "../../experiments/common/shell3d_study.h"
+#endif
 
 namespace {
 
@@ -160,6 +165,89 @@ TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
   EXPECT_LT(rough_default, 0.1);
   EXPECT_GT(jitter_large, 3.0 * jitter_default);
   EXPECT_GT(rough_large, 3.0 * rough_default);
+}
+
+#ifdef VS_HAVE_SHELL3D
+// 05_shell3d in small (the study's --quick form, experiments/common/shell3d_study.h): the quarter
+// disc of example 4a, punch friction 0.2, to 2 mm at n = 4 (48 elements), against its
+// axisymmetric twin (30 elements). The run completes and stays within the stated deviations at
+// 1 and 2 mm, and closer than on the coarsest mesh (n = 2); the 40-element axisymmetric run
+// measures the reference's own noise. Measured (22 Nov 2026; n = 4: 48 elements, 1 085 dofs,
+// ~1.6 s CPU): largest |mean-force deviation| 2.39 % (n = 2: 7.25 %), largest |force deviation|
+// 2.36 %, |d eps_t| 0.0019; reference noise 0.81 % / 0.0035.
+constexpr int kShell3dQuickDivisions = 4;
+constexpr double kShell3dQuickNoiseTolerance = 0.015;
+constexpr double kShell3dQuickMeanForceTolerance = 0.035;
+constexpr double kShell3dQuickForceTolerance = 0.035;
+constexpr double kShell3dQuickThicknessStrainTolerance = 0.005;
+
+TEST(ExperimentsQuick, Shell3dQuarterDiscFollowsAxisymmetricTwin) {
+  const Shell3dStudy study = shell3d_study(VS_SOURCE_DIR, true);
+  const vs::Scene base = shell3d_base_scene(study);
+  const AxisymRun ref = run_axisym_twin(base, study.axisym_elements);
+  const AxisymRun check = run_axisym_twin(base, study.axisym_check_elements);
+  ASSERT_TRUE(ref.result.completed()) << ref.result.message;
+  ASSERT_TRUE(check.result.completed()) << check.result.message;
+  const Deviations noise = summarise(compare_axisym(study.outputs_mm, check.result, ref.result));
+  ASSERT_EQ(noise.travels, 2);
+  const Shell3dRow coarsest = run_shell3d_case(base, {"mitc9", 2}, ref.result);
+  const Shell3dRow row = run_shell3d_case(base, {"mitc9", kShell3dQuickDivisions}, ref.result);
+  fmt::print(
+      "axisym noise: dF mean {:+.2f} %, d eps_t {:.4f}; 3D n = {}: {:.2f} s, dF {:+.2f} %, "
+      "dF mean {:+.2f} %, max |dF| {:.2f} %, max |dF mean| {:.2f} %, max |d eps_t| {:.4f}\n",
+      100 * noise.mean_force_at_travel, noise.max_eps_thickness, kShell3dQuickDivisions, row.wall_s,
+      100 * row.dev.force_at_travel, 100 * row.dev.mean_force_at_travel,
+      100 * row.dev.max_abs_force, 100 * row.dev.max_abs_mean_force, row.dev.max_eps_thickness);
+  ASSERT_TRUE(row.completed) << row.message;
+  ASSERT_EQ(row.dev.travels, 2);
+  EXPECT_LT(noise.max_abs_mean_force, kShell3dQuickNoiseTolerance);
+  EXPECT_LT(row.dev.max_abs_mean_force, kShell3dQuickMeanForceTolerance);
+  EXPECT_LT(row.dev.max_abs_force, kShell3dQuickForceTolerance);
+  EXPECT_LT(row.dev.max_eps_thickness, kShell3dQuickThicknessStrainTolerance);
+  for (const auto& c : row.cmp) EXPECT_GT(c.force_3d_N, 0.0);
+  ASSERT_TRUE(coarsest.completed) << coarsest.message;
+  EXPECT_LT(row.dev.max_abs_mean_force, coarsest.dev.max_abs_mean_force);
+}
+#endif
+
+// 07_calibration_cost in small (experiments/common/calibration_cost.h): the twin to 10 mm (load
+// at 1..10 mm, thickness strain at 10 mm), Swift K identified from a start 20 % off, the other
+// parameters fixed at the truth. Data from the fit's own model (12 elements) are recovered
+// exactly (optimiser and forward map are sound); data from a finer model (48 elements) carry the
+// coarse model's discretisation error into K, and a finer model in the fit (24 elements) reduces
+// that bias. Measured (22 Nov 2026): K +0.000 % / +0.720 % / +0.472 %, 13-14 forward runs per
+// fit, 2-5 s in all. Friction is not used here: at 12 elements and 10 mm even the model's own data
+// give it back 18 % off (it is weakly and not smoothly determined by these data), see the full
+// study for its bias.
+constexpr double kCalibrationSelfTolerance = 1e-3;
+constexpr double kCalibrationCoarseBiasLimit = 0.02;
+
+TEST(ExperimentsQuick, CalibrationCostCoarseModelBias) {
+  TwinSetup setup;
+  setup.scene_path = scene_path(VS_SOURCE_DIR, "ex1_hemispherical_stretching");
+  setup.travel_mm = 10.0;
+  setup.strain_travels_mm = {10.0};
+  setup.free = {false, true, false, false};
+  setup.threads = 2;
+  const Overrides e12{{"blank.elements", "12"}}, e24{{"blank.elements", "24"}};
+  const TwinData own = twin_data(setup, e12);
+  const TwinData fine = twin_data(setup, {{"blank.elements", "48"}});
+  ASSERT_TRUE(own.ok) << own.message;
+  ASSERT_TRUE(fine.ok) << fine.message;
+  const TwinFit self = twin_fit(setup, own, e12);
+  const TwinFit coarse = twin_fit(setup, fine, e12);
+  const TwinFit finer = twin_fit(setup, fine, e24);
+  for (const auto& [label, f] :
+       {std::pair{"12 el, own data", &self}, std::pair{"12 el, 48-el data", &coarse},
+        std::pair{"24 el, 48-el data", &finer}}) {
+    fmt::print("{}: K {:+.3f} %, {} forward runs, {:.1f} s\n", label, 100 * f->error[1],
+               f->forward_runs, f->wall_s);
+    EXPECT_TRUE(f->converged) << label << ": " << f->message;
+    EXPECT_EQ(f->error[0], 0.0) << "friction is fixed";
+  }
+  EXPECT_LT(std::abs(self.error[1]), kCalibrationSelfTolerance);
+  EXPECT_LT(std::abs(coarse.error[1]), kCalibrationCoarseBiasLimit);
+  EXPECT_LT(std::abs(finer.error[1]), std::abs(coarse.error[1]));
 }
 
 }  // namespace
