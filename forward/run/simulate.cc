@@ -78,6 +78,12 @@ class Driver {
   // Grid spacing of the step ends: the smaller of the absolute cap and the cap relative to the
   // shortest initial element (the stability limit of the explicit geometry update).
   double travel_increment() const { return grid_increment_mm_; }
+  // Squeeze check of a converged state: a node in contact with one tool whose other surface
+  // lies inside another tool (a rim thicker than the punch-die clearance). Contact is one tool
+  // per node, so the second tool does not act: ironing is not modelled and the run says so.
+  void note_squeeze(const AxisymState& s);
+  // Timings, counters and the squeeze warning into the result, on every way out of run().
+  void finish_result(double total_s, RunResult* result);
   bool eligible(int node) const {
     return !(node == model_.num_nodes() - 1 && scene_.blank.edge != EdgeCondition::kFree);
   }
@@ -111,6 +117,10 @@ class Driver {
   std::vector<double> hold_until_mm_;
   RunTimings timings_;
   int friction_fallbacks_ = 0;  // solves redone with lagged friction
+  // First squeezed state (travel, initial radius, tools, overlap) and the largest overlap.
+  double squeeze_travel_mm_ = -1.0, squeeze_r0_mm_ = 0.0, squeeze_first_mm_ = 0.0;
+  double squeeze_max_mm_ = 0.0;
+  std::string squeeze_tools_;
 };
 
 void Driver::attach(AxisymState& s, int node, int tool) {
@@ -352,6 +362,43 @@ bool Driver::update_thickness(AxisymState& s, std::string* why) const {
   return true;
 }
 
+void Driver::note_squeeze(const AxisymState& s) {
+  // Overlaps below 2 % of the initial thickness are contact tolerance, not a squeeze.
+  const double tol = 0.02 * scene_.blank.thickness_mm;
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    const NodeContact& c = s.contact[i];
+    if (c.tool < 0 || model_.sandwiched(c)) continue;
+    const double h = model_.node_thickness(s, i);
+    for (std::size_t t = 0; t < model_.tools().size(); ++t) {
+      const RigidTool& other = model_.tools()[t];
+      if (static_cast<int>(t) == c.tool || other.kind() == ToolKind::kBlankHolder) continue;
+      const double overlap = -other.gap(s.x[i], h);
+      if (overlap <= tol) continue;
+      squeeze_max_mm_ = std::max(squeeze_max_mm_, overlap);
+      if (squeeze_travel_mm_ < 0.0) {
+        squeeze_travel_mm_ = travel(s);
+        squeeze_r0_mm_ = model_.initial_radius(i);
+        squeeze_first_mm_ = overlap;
+        squeeze_tools_ = model_.tools()[c.tool].name() + "' and '" + other.name();
+      }
+    }
+  }
+}
+
+void Driver::finish_result(double total_s, RunResult* result) {
+  timings_.total_s = total_s;
+  result->timings = timings_;
+  result->friction_fallbacks = friction_fallbacks_;
+  if (squeeze_travel_mm_ >= 0.0) {
+    result->warnings.push_back(fmt::format(
+        "from punch travel {:.2f} mm the sheet is squeezed between tools '{}' (node at initial "
+        "radius {:.3g} mm overlaps the second tool by {:.3g} mm, up to {:.3g} mm later): contact "
+        "is one tool per node, so ironing is not modelled and results beyond that travel are not "
+        "trustworthy",
+        squeeze_travel_mm_, squeeze_tools_, squeeze_r0_mm_, squeeze_first_mm_, squeeze_max_mm_));
+  }
+}
+
 bool Driver::take_step(const Solved& from, double dt, Solved* to, std::string* why) {
   to->directions = from.directions;
   if (scene_.numerics.time_integration == TimeIntegration::kEuler) {
@@ -414,9 +461,7 @@ RunResult Driver::run() {
     result.termination = Termination::kFailed;
     result.message = "the first step did not converge: " + why;
     result.profiles.push_back(make_profile(model_, current.state, 0.0, {}));
-    timings_.total_s = seconds_since(t_start);
-    result.timings = timings_;
-    result.friction_fallbacks = friction_fallbacks_;
+    finish_result(seconds_since(t_start), &result);
     return result;
   }
   const double total = scene_.process.punch_travel_mm;
@@ -439,6 +484,7 @@ RunResult Driver::run() {
     rec.cutbacks = cutbacks_since_success;
     fill_geometry(model_, current.state, &rec);
     result.steps.push_back(rec);
+    note_squeeze(current.state);
     result.total_iterations += rec.iterations;
     if (options_.on_step) options_.on_step(rec);
     while (next_output < outputs.size() && std::abs(outputs[next_output] - T) <= 1e-9 * total) {
@@ -465,9 +511,7 @@ RunResult Driver::run() {
         result.message = fmt::format("stopped at punch travel {:.4f} mm after {} cut-backs: {}", T,
                                      cutbacks_since_success, why);
         result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
-        timings_.total_s = seconds_since(t_start);
-        result.timings = timings_;
-        result.friction_fallbacks = friction_fallbacks_;
+        finish_result(seconds_since(t_start), &result);
         return result;
       }
       if (options_.verbose) {
@@ -513,9 +557,7 @@ RunResult Driver::run() {
     result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
                                  travel(current.state), result.steps.size());
   }
-  timings_.total_s = seconds_since(t_start);
-  result.timings = timings_;
-  result.friction_fallbacks = friction_fallbacks_;
+  finish_result(seconds_since(t_start), &result);
   return result;
 }
 
