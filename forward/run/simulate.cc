@@ -202,6 +202,12 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     // elements, frictionless: 26 % fewer iterations than starting them at zero).
     problem->warm_start(out->directions);
     const auto t0 = Clock::now();
+    if (options_.verbose) {
+      int nc = 0;
+      for (int i = 0; i < model_.num_nodes(); ++i) nc += s.contact[i].tool >= 0;
+      std::fprintf(stderr, "  solve at travel %.5f mm, round %d, %d contact nodes\n", travel(s),
+                   round, nc);
+    }
     if (model_.consistent_friction()) {
       // Friction consistent with the current normal reactions (quadratic convergence; measured
       // on ex1, 48 elements, friction 0.2: 2.7x fewer iterations). At high friction its
