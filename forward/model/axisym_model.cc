@@ -170,7 +170,7 @@ void AxisymModel::prescribed(const AxisymState& s, std::vector<char>* mask,
       const RigidTool& tool = tools_[c.tool];
       const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
       fix(i, 1, tool.velocity().dot(c.normal));
-      if (tool.sticking()) fix(i, 0, tool.velocity().dot(t));
+      if (tool.sticking() && !c.slip_edge) fix(i, 0, tool.velocity().dot(t));
     }
   }
   // Axis of symmetry: no radial motion, no rotation (the contact normal there is vertical, so the

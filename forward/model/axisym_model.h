@@ -32,6 +32,9 @@ struct NodeContact {
   bool on_die_face = false;     // touching the flat face of the die (the flange)
   bool on_holder_face = false;  // touching a fixed-gap blank holder (the flange, from below)
   bool sandwiched = false;      // fixed-gap flange node filling the gap (see AxisymModel)
+  // Sticking tool, edge of the stuck patch: the node touches without friction (normal
+  // constraint only) until the patch grows past it (see simulate.cc, Driver::attach).
+  bool slip_edge = false;
 };
 
 // Everything that changes from step to step.

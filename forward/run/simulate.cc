@@ -116,7 +116,8 @@ class Driver {
   // sticking, 0.037 mm grid: 20 000 steps stuck at 26.63 mm).
   std::vector<double> hold_until_mm_;
   RunTimings timings_;
-  int friction_fallbacks_ = 0;  // solves redone with lagged friction
+  int friction_fallbacks_ = 0;      // solves redone with lagged friction
+  std::vector<char> was_released_;  // nodes released from a tool at any earlier solve
   // First squeezed state (travel, initial radius, tools, overlap) and the largest overlap.
   double squeeze_travel_mm_ = -1.0, squeeze_r0_mm_ = 0.0, squeeze_first_mm_ = 0.0;
   double squeeze_max_mm_ = 0.0;
@@ -128,8 +129,14 @@ void Driver::attach(AxisymState& s, int node, int tool) {
   const ClosestPoint c = t.closest(s.x[node]);
   NodeContact& nc = s.contact[node];
   const double keep_force = nc.tool == tool ? nc.normal_force_N : 0.0;
+  // A node that left a sticking tool (its reaction pulled) and touches it again is the edge of
+  // the stuck patch: stuck, it pulls; free, it runs into the tool (measured: ex1 sticking, one
+  // attach-release round at every step). The consistent state is touching with zero reaction
+  // and zero friction, so it slides without friction until both neighbours touch the tool.
+  const bool slip = t.sticking() && (nc.tool == tool ? nc.slip_edge : was_released_[node] != 0);
   nc = NodeContact{};
   nc.tool = tool;
+  nc.slip_edge = slip;
   nc.normal = c.normal;
   nc.normal_force_N = keep_force;
   nc.on_die_face = t.kind() == ToolKind::kDie && c.primitive == 0;
@@ -157,6 +164,13 @@ void Driver::maintain_contacts(AxisymState& s, const std::vector<char>& released
         continue;
       }
       attach(s, i, s.contact[i].tool);  // back onto the surface, normal refreshed
+      if (s.contact[i].slip_edge) {
+        const int ti = s.contact[i].tool;
+        const bool axis = i == 0 && model_.initial_radius(0) == 0.0;
+        const bool next = i + 1 < model_.num_nodes() && s.contact[i + 1].tool == ti;
+        const bool prev = axis ? next : i > 0 && s.contact[i - 1].tool == ti;
+        if (next && prev) s.contact[i].slip_edge = false;  // inside the patch now: stuck
+      }
       continue;
     }
     if (!released.empty() && released[i]) continue;
@@ -267,6 +281,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     for (int i : release) {
       s.contact[i] = NodeContact{};
       released_[i] = 1;
+      was_released_[i] = 1;
       hold_until_mm_[i] = travel(s) + travel_increment();
     }
     const bool any = !release.empty();
@@ -460,6 +475,7 @@ RunResult Driver::run() {
   Solved current;
   current.state = model_.initial_state();
   hold_until_mm_.assign(model_.num_nodes(), -std::numeric_limits<double>::infinity());
+  was_released_.assign(model_.num_nodes(), 0);
   maintain_contacts(current.state, {});
   std::string why;
   const double V = scene_.process.punch_speed_mm_per_s;
