@@ -13,7 +13,9 @@
 namespace vs::shell3d {
 
 // The same scene as an axisymmetric one with `elements` meridian elements (uniform grading).
-// Requires a circular blank.
+// Requires a circular blank. Its numerics.max_travel_increment_per_length is at most the default
+// (0.025): the reference is run at the axisymmetric stability cap even when the 3D scene relaxes
+// the key to save 3D steps.
 Scene axisymmetric_twin(const Scene& shell3d_scene, int elements);
 
 struct TravelComparison {

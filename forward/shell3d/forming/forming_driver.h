@@ -22,4 +22,12 @@ struct Shell3dRunOptions {
 // does not build (not shell3d, blank holder, ...).
 Shell3dResult simulate_shell3d(const Scene& scene, const Shell3dRunOptions& options = {});
 
+class FormingModel;
+// The element length of the per-length travel cap (numerics.max_travel_increment_per_length):
+// the smallest sqrt(A_e) over the initial 9-node elements [mm]. A 9-node element spans two node
+// intervals, so this is twice its node spacing; robust to the curved, skewed elements of the
+// O-grid blank, where a single edge would not be. With it the default 0.025 of the axisymmetric
+// 2-node element (whose length is its node spacing) also removes the 3D step jitter.
+double shortest_element_size(const FormingModel& model);
+
 }  // namespace vs::shell3d
