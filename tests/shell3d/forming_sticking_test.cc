@@ -84,9 +84,12 @@ TEST(Forming3dSticking, AxisymmetricTwinIsConvergedInTheTravelStep) {
   const double fr = mean_force_at(r.steps, 20.0), fh = mean_force_at(h.steps, 20.0),
                fc = mean_force_at(c.steps, 20.0);
   EXPECT_LT(std::abs(fr - fh) / fh, 0.005) << fr << " vs " << fh;
-  // The old reference (documents the finding; if the axisymmetric driver ever becomes accurate at
-  // 0.5 mm steps this bound may be dropped).
-  EXPECT_GT(std::abs(fc - fh) / fh, 0.03) << fc << " vs " << fh;
+  // The old reference on the 0.5 mm grid was 6 % low at 20 mm; most of that was the edge node of
+  // the stuck patch attaching and releasing at every step (fixed in simulate.cc, Driver::attach:
+  // it now slides without friction until the patch grows past it). Since then the 0.5 mm grid is
+  // within 0.2 % here (measured), but it stays outside the stability cap, so the twin keeps the
+  // cap.
+  EXPECT_LT(std::abs(fc - fh) / fh, 0.02) << fc << " vs " << fh;
 }
 
 // Sticking 3D vs axisymmetric at 8 mm, where the comparison used to be 5.8 % off in mean force
