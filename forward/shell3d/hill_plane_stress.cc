@@ -1,5 +1,6 @@
 #include "shell3d/hill_plane_stress.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
@@ -19,7 +20,7 @@ double r_value_of(const ViscousLaw& law) {
 }
 
 HillPlaneStressLaw::HillPlaneStressLaw(const ViscousLaw& law)
-    : law_(&law), A_(anisotropy_matrix3(r_value_of(law))), a11_(law.A()(0, 0)) {}
+    : law_(&law), A_(anisotropy_matrix3(r_value_of(law))), Ainv3_(3.0 * A_.inverse()) {}
 
 double HillPlaneStressLaw::effective_rate(const Vec3& d) const {
   return std::sqrt(std::max(d.dot(A_ * d) / 3.0, 0.0));
@@ -28,15 +29,19 @@ double HillPlaneStressLaw::effective_rate(const Vec3& d) const {
 InPlanePoint HillPlaneStressLaw::evaluate(double sigma_y, double hardening_viscosity,
                                           const Vec3& d) const {
   const Vec3 Ad = A_ * d;
-  const double e = std::sqrt(std::max(d.dot(Ad) / 3.0, 0.0));
-  // The 2-vector (t, 0) has effective rate sqrt(A11 t^2 / 3) = e under the 2x2 law.
-  const Eigen::Vector2d d2(e * std::sqrt(3.0 / a11_), 0.0);
-  const ViscousLaw::Point p2 = law_->evaluate(sigma_y, hardening_viscosity, d2);
+  return evaluate_scaled(sigma_y, hardening_viscosity, Ad, std::max(d.dot(Ad) / 3.0, 0.0));
+}
+
+InPlanePoint HillPlaneStressLaw::evaluate_scaled(double sigma_y, double hardening_viscosity,
+                                                 const Vec3& Ad, double e_squared) const {
+  // The scalar part depends on e only (the 2x2 law at any 2-vector of the same effective rate).
+  const ViscousLaw::Scalars q = law_->scalars(sigma_y, hardening_viscosity, e_squared, true);
   InPlanePoint p;
-  p.rate = e;
-  p.mu = p2.mu;
-  p.tangent_coef = p2.tangent_coef;
-  p.potential = p2.potential;
+  p.rate = std::sqrt(e_squared);
+  p.mu = q.mu;
+  p.tangent_coef = q.tangent_coef;
+  p.potential = q.potential;
+  p.cutoff_rate = q.cutoff_rate;
   p.stress = p.mu * Ad;
   return p;
 }

@@ -37,6 +37,7 @@ struct InPlanePoint {
   double mu = 0.0;             // secant viscosity [MPa s]
   double tangent_coef = 0.0;   // D_tan = mu A + tangent_coef (A d)(A d)^T
   double potential = 0.0;      // phi(e) [MPa/s]
+  double cutoff_rate = 0.0;    // eh = sqrt(e^2 + e_c^2) (0 for a constant viscosity)
   Vec3 stress = Vec3::Zero();  // (s11, s22, s12) [MPa]
 };
 
@@ -46,14 +47,19 @@ class HillPlaneStressLaw {
   explicit HillPlaneStressLaw(const ViscousLaw& law);
 
   InPlanePoint evaluate(double sigma_y, double hardening_viscosity, const Vec3& d) const;
+  // The same with the rate d = A^-1 (A d) given through Ad = A d and e^2 = d . Ad / 3.
+  InPlanePoint evaluate_scaled(double sigma_y, double hardening_viscosity, const Vec3& Ad,
+                               double e_squared) const;
   double effective_rate(const Vec3& d) const;
   const Mat3& A() const { return A_; }
+  // Squared dual norm 3 n^T A^-1 n of a flow direction n (the primal-dual tangent, shell9.h).
+  double dual_norm_squared(const Vec3& n) const { return n.dot(Ainv3_ * n); }
   const ViscousLaw& scalar_law() const { return *law_; }
 
  private:
   const ViscousLaw* law_;
   Mat3 A_;
-  double a11_;  // A(0,0) of the 2x2 law, used to build a 2-vector with a given effective rate
+  Mat3 Ainv3_;  // 3 A^-1
 };
 
 }  // namespace vs::shell3d

@@ -1,10 +1,11 @@
 #include "shell3d/shell9.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cassert>
-#include <optional>
+#include <cmath>
+#include <vector>
 
-#include "shell3d/mitc9.h"
 #include "shell3d/quadrature.h"
 
 namespace vs::shell3d {
@@ -30,11 +31,38 @@ double Shell9Material::shear_reference() const {
 
 int shell9_inplane_points(Shell9Rule rule) { return rule == Shell9Rule::kReduced ? 4 : 9; }
 
+namespace {
+
+// Gauss-Legendre rules of 2 and 3 points, built once (gauss_legendre allocates).
+struct Gauss {
+  std::array<double, 3> x{}, w{};
+  int n = 0;
+};
+const Gauss& gauss(int n) {
+  static const Gauss g2 = [] {
+    const Rule1D r = gauss_legendre(2);
+    Gauss g;
+    g.n = 2;
+    for (int i = 0; i < 2; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
+    return g;
+  }();
+  static const Gauss g3 = [] {
+    const Rule1D r = gauss_legendre(3);
+    Gauss g;
+    g.n = 3;
+    for (int i = 0; i < 3; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
+    return g;
+  }();
+  return n == 2 ? g2 : g3;
+}
+
+}  // namespace
+
 double shell9_area(const Shell9Geometry& g) {
-  const Rule1D q = gauss_legendre(3);
+  const Gauss& q = gauss(3);
   double area = 0.0;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
       const Shape9 sh = lagrange9(q.x[i], q.x[j]);
       Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
       for (int a = 0; a < 9; ++a) {
@@ -47,6 +75,205 @@ double shell9_area(const Shell9Geometry& g) {
 }
 
 namespace {
+
+// ---- Covariant strain-rate operator as a polynomial in the thickness coordinate ----
+//
+// With c_a = h_a / 2 the point x(r, s, t) = sum N_a (x_a + t c_a V3_a) has
+//   g_r(t) = gr0 + t gr1,  gr0 = sum N_a,r x_a,  gr1 = sum N_a,r c_a V3_a   (g_s alike),
+//   g_t    = sum N_a c_a V3_a                                               (independent of t),
+// and the velocity u = sum N_a (v_a + t c_a dV3_a). The rows of covariant_B
+// (shell9_kinematics.h), [e_rr, e_ss, 2e_rs, 2e_rt, 2e_st], are products of these vectors with
+// N_a, N_a,r, N_a,s and (director columns) one more factor t c_a, so B(t) = B0 + t B1 + t^2 B2:
+//   velocity columns of node a (times the nodal velocity frame Q_a, if any):
+//     B0: Nr gr0, Ns gs0, Ns gr0 + Nr gs0, Nr gt, Ns gt      B1: Nr gr1, Ns gs1, Ns gr1 + Nr gs1,
+//     0, 0                                                    B2: 0
+//   director-rate columns (times P_a):
+//     B0: 0, 0, 0, c N gr0, c N gs0
+//     B1: c Nr gr0, c Ns gs0, c (Ns gr0 + Nr gs0), c (N gr1 + Nr gt), c (N gs1 + Ns gt)
+//     B2: c Nr gr1, c Ns gs1, c (Ns gr1 + Nr gs1), 0, 0
+// (rows of the 5 x 3 blocks written as row vectors). The MITC9 assumed strains interpolate the
+// tying values in (r, s) with weights independent of t, so they are quadratic in t as well: the
+// tying points are evaluated once per element, not once per thickness point.
+constexpr int kMaxDof = 54;
+using BMat = Eigen::Matrix<double, 5, Eigen::Dynamic, Eigen::ColMajor, 5, kMaxDof>;
+using VecD = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxDof, 1>;
+
+struct SurfacePoint {
+  Vec3 gr0, gr1, gs0, gs1, gt;
+  double h = 0.0;
+};
+
+struct CovPoly {
+  BMat B[3];
+};
+
+SurfacePoint surface_point(const Shell9Geometry& g, const Shape9& sh) {
+  SurfacePoint p;
+  p.gr0 = p.gr1 = p.gs0 = p.gs1 = p.gt = Vec3::Zero();
+  for (int a = 0; a < 9; ++a) {
+    const double c = 0.5 * g.thickness[a];
+    const Vec3 cv = c * g.director[a];
+    p.gr0 += sh.dr(a) * g.x[a];
+    p.gs0 += sh.ds(a) * g.x[a];
+    p.gr1 += sh.dr(a) * cv;
+    p.gs1 += sh.ds(a) * cv;
+    p.gt += sh.N(a) * cv;
+    p.h += sh.N(a) * g.thickness[a];
+  }
+  return p;
+}
+
+void covariant_poly(const Shell9Geometry& g, const Shape9& sh, const SurfacePoint& p, int n,
+                    CovPoly* out) {
+  for (BMat& B : out->B) B.setZero(5, n);
+  int off = 0;
+  for (int a = 0; a < 9; ++a) {
+    const double c = 0.5 * g.thickness[a];
+    const double Nr = sh.dr(a), Ns = sh.ds(a), N = sh.N(a);
+    // Velocity columns: g^T Q_a = (Q_a^T g)^T.
+    Vec3 r0 = p.gr0, r1 = p.gr1, s0 = p.gs0, s1 = p.gs1, tt = p.gt;
+    if (g.has_vel_frame) {
+      const Mat3 Qt = g.vel_frame[a].transpose();
+      r0 = Qt * p.gr0;
+      r1 = Qt * p.gr1;
+      s0 = Qt * p.gs0;
+      s1 = Qt * p.gs1;
+      tt = Qt * p.gt;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int col = off + k;
+      out->B[0](0, col) = Nr * r0(k);
+      out->B[0](1, col) = Ns * s0(k);
+      out->B[0](2, col) = Ns * r0(k) + Nr * s0(k);
+      out->B[0](3, col) = Nr * tt(k);
+      out->B[0](4, col) = Ns * tt(k);
+      out->B[1](0, col) = Nr * r1(k);
+      out->B[1](1, col) = Ns * s1(k);
+      out->B[1](2, col) = Ns * r1(k) + Nr * s1(k);
+    }
+    // Director-rate columns: g^T P_a = (P_a^T g)^T.
+    const int nr = g.n_rot[a];
+    const Mat3& P = g.rot_map[a];
+    for (int k = 0; k < nr; ++k) {
+      const Vec3 pk = P.col(k);
+      const double R0 = pk.dot(p.gr0), R1 = pk.dot(p.gr1), S0 = pk.dot(p.gs0), S1 = pk.dot(p.gs1),
+                   Tt = pk.dot(p.gt);
+      const int col = off + 3 + k;
+      out->B[0](3, col) = c * N * R0;
+      out->B[0](4, col) = c * N * S0;
+      out->B[1](0, col) = c * Nr * R0;
+      out->B[1](1, col) = c * Ns * S0;
+      out->B[1](2, col) = c * (Ns * R0 + Nr * S0);
+      out->B[1](3, col) = c * (N * R1 + Nr * Tt);
+      out->B[1](4, col) = c * (N * S1 + Ns * Tt);
+      out->B[2](0, col) = c * Nr * R1;
+      out->B[2](1, col) = c * Ns * S1;
+      out->B[2](2, col) = c * (Ns * R1 + Nr * S1);
+    }
+    off += 3 + nr;
+  }
+}
+
+// MITC9 tying (mitc9.h): a = 1/sqrt(3), b = sqrt(3/5); linear basis through -a, a, quadratic
+// through -b, 0, b.
+struct Mitc9Points {
+  double a = 1.0 / std::sqrt(3.0), b = std::sqrt(0.6);
+  std::array<double, 2> lin(double x) const { return {0.5 * (1.0 - x / a), 0.5 * (1.0 + x / a)}; }
+  std::array<double, 3> quad(double x) const {
+    const double b2 = b * b;
+    return {0.5 * x * (x - b) / b2, 1.0 - x * x / b2, 0.5 * x * (x + b) / b2};
+  }
+  double r_coord(int k) const { return (k / 3 == 0) ? -a : a; }
+  double s_coord(int k) const { return (k % 3 - 1) * b; }
+};
+
+// The tying values the interpolation needs, per power of t: rows e_rr and 2e_rt of the 6 points
+// (r_k, s_k) of their family, e_ss and 2e_st of the 6 points (s_k, r_k), 2e_rs of the 4 points
+// (+-a, +-a); one sample per row of these matrices (column-major: a column holds one dof's
+// samples, so each interpolated row is a product with the weight vector).
+using Samples6 = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kMaxDof>;
+using Samples4 = Eigen::Matrix<double, 4, Eigen::Dynamic, Eigen::ColMajor, 4, kMaxDof>;
+struct Mitc9Tying {
+  Samples6 rr[3], rt[3], ss[3], st[3];
+  Samples4 rs[3];
+};
+
+void mitc9_tying_poly(const Shell9Geometry& g, int n, CovPoly* scratch, Mitc9Tying* ty) {
+  const Mitc9Points m;
+  auto at = [&](double r, double s) {
+    const Shape9 sh = lagrange9(r, s);
+    covariant_poly(g, sh, surface_point(g, sh), n, scratch);
+  };
+  for (int p = 0; p < 3; ++p) {
+    ty->rr[p].resize(6, n);
+    ty->rt[p].resize(6, n);
+    ty->ss[p].resize(6, n);
+    ty->st[p].resize(6, n);
+    ty->rs[p].resize(4, n);
+  }
+  for (int k = 0; k < 6; ++k) {
+    at(m.r_coord(k), m.s_coord(k));
+    for (int p = 0; p < 3; ++p) {
+      ty->rr[p].row(k) = scratch->B[p].row(0);
+      ty->rt[p].row(k) = scratch->B[p].row(3);
+    }
+    at(m.s_coord(k), m.r_coord(k));  // r and s exchanged
+    for (int p = 0; p < 3; ++p) {
+      ty->ss[p].row(k) = scratch->B[p].row(1);
+      ty->st[p].row(k) = scratch->B[p].row(4);
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    at((k % 2 == 0) ? -m.a : m.a, (k / 2 == 0) ? -m.a : m.a);
+    for (int p = 0; p < 3; ++p) ty->rs[p].row(k) = scratch->B[p].row(2);
+  }
+}
+
+void mitc9_assumed_poly(const Mitc9Tying& ty, double r, double s, int n, CovPoly* out) {
+  const Mitc9Points m;
+  const auto lr = m.lin(r), ls = m.lin(s);
+  const auto qr = m.quad(r), qs = m.quad(s);
+  Eigen::Matrix<double, 6, 1> wr, ws;
+  Eigen::Vector4d wrs;
+  for (int k = 0; k < 6; ++k) {
+    wr(k) = lr[k / 3] * qs[k % 3];  // e_rr, 2e_rt family
+    ws(k) = ls[k / 3] * qr[k % 3];  // e_ss, 2e_st family
+  }
+  for (int k = 0; k < 4; ++k) wrs(k) = lr[k % 2] * ls[k / 2];
+  for (int p = 0; p < 3; ++p) {
+    BMat& B = out->B[p];
+    B.resize(5, n);
+    B.row(0).noalias() = wr.transpose() * ty.rr[p];
+    B.row(1).noalias() = ws.transpose() * ty.ss[p];
+    B.row(2).noalias() = wrs.transpose() * ty.rs[p];
+    B.row(3).noalias() = wr.transpose() * ty.rt[p];
+    B.row(4).noalias() = ws.transpose() * ty.st[p];
+  }
+}
+
+// Point basis at thickness coordinate t of a surface point (as point_basis()).
+struct Basis {
+  double detJ;
+  Mat3 frame;
+  Mat5 T;  // local_transform(J^-1 frame)
+};
+
+Basis basis_at(const SurfacePoint& p, double t) {
+  Basis b;
+  Mat3 J;
+  const Vec3 gr = p.gr0 + t * p.gr1, gs = p.gs0 + t * p.gs1;
+  J.col(0) = gr;
+  J.col(1) = gs;
+  J.col(2) = p.gt;
+  b.detJ = J.determinant();
+  const Vec3 e3 = gr.cross(gs).normalized();
+  const Vec3 e1 = gr.normalized();
+  b.frame.col(0) = e1;
+  b.frame.col(1) = e3.cross(e1);
+  b.frame.col(2) = e3;
+  b.T = local_transform(J.inverse() * b.frame);
+  return b;
+}
 
 struct PointLaw {
   Vec3 stress;
@@ -68,109 +295,168 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int fl
   }
   const double sy = st.sigma_y ? st.sigma_y[flow_index] : 0.0;
   const double hv = st.hardening_viscosity ? st.hardening_viscosity[flow_index] : 0.0;
-  const InPlanePoint ip = mat.law->evaluate(sy, hv, d);
+  const HillPlaneStressLaw& law = *mat.law;
+  const Mat3& A = law.A();
+  const Vec3 Ad = A * d;
+  const InPlanePoint ip = law.evaluate_scaled(sy, hv, Ad, std::max(d.dot(Ad) / 3.0, 0.0));
   p.stress = ip.stress;
   p.potential = ip.potential;
   p.rate = ip.rate;
-  p.D = ip.mu * mat.law->A();
-  if (kind == Shell9Stiffness::kTangent && ip.tangent_coef != 0.0) {
-    const Vec3 Ad = mat.law->A() * d;
-    p.D += (tangent_weight * ip.tangent_coef) * Ad * Ad.transpose();
+  if (kind == Shell9Stiffness::kNone) return p;
+  p.D = ip.mu * A;
+  if (kind != Shell9Stiffness::kTangent) return p;
+  if (st.dual_record) {
+    // Primal-dual tangent (shell9.h, Shell9FlowDirection).
+    Shell9FlowDirection& rec = st.dual_record[flow_index];
+    rec.d = d;
+    rec.eh = ip.cutoff_rate;
+    rec.m = ip.cutoff_rate > 0.0 ? Vec3(Ad / (3.0 * ip.cutoff_rate)) : Vec3::Zero();
+    Vec3 n = Vec3::Zero(), n_full = Vec3::Zero();
+    if (st.dual_given) {
+      n = n_full = st.dual_given[flow_index];
+    } else if (st.dual_anchor && st.dual_anchor[flow_index].eh > 0.0) {
+      const Shell9FlowDirection& a = st.dual_anchor[flow_index];
+      const Vec3 dd = d - a.d;
+      n = n_full = a.m + (A * dd / 3.0 - a.n * a.m.dot(dd)) / a.eh;
+      const double norm2 = law.dual_norm_squared(n);
+      if (norm2 > 1.0) n /= std::sqrt(norm2);
+    }
+    rec.n = n;
+    rec.n_full = n_full;
+    if (ip.tangent_coef != 0.0) {
+      const Vec3 nAd = (1.5 * tangent_weight * ip.tangent_coef * ip.cutoff_rate) * n;
+      p.D += nAd * Ad.transpose() + Ad * nAd.transpose();
+    }
+    return p;
   }
+  if (ip.tangent_coef != 0.0) p.D += (tangent_weight * ip.tangent_coef) * Ad * Ad.transpose();
   return p;
 }
 
-// Local engineering strain-rate operator [eps11, eps22, gam12, gam13, gam23] at (r, s, t).
-Eigen::Matrix<double, 5, Eigen::Dynamic> local_B(const Shell9Geometry& g, double r, double s,
-                                                 double t, const Mitc9TyingB* tying,
-                                                 PointBasis* pb) {
-  const Shape9 sh = lagrange9(r, s);
-  *pb = point_basis(g, sh, t);
-  const Mat5X Bcov = tying ? mitc9_assumed_B(*tying, r, s) : covariant_B(g, sh, *pb, t);
-  return local_transform(pb->C) * Bcov;
-}
+// Per-thread scratch: the kernel allocates nothing after the first element of a given size.
+struct Workspace {
+  Mitc9Tying tying;
+  CovPoly assumed;
+  Eigen::MatrixXd L, DL;  // stacked point operators B_p and (dV D_p) B_p, one row per strain
+};
 
 }  // namespace
 
 void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
                      const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
                      Shell9Stiffness kind, Shell9Output* out, double tangent_weight) {
+  thread_local Workspace ws;
   const int n = g.ndof();
-  assert(q.size() == n);
+  assert(q.size() == n && n <= kMaxDof);
   const bool want_k = kind != Shell9Stiffness::kNone;
-  out->force = Eigen::VectorXd::Zero(n);
-  if (want_k) out->stiffness = Eigen::MatrixXd::Zero(n, n);
+  out->force.setZero(n);
   out->potential = 0.0;
 
-  const Rule1D mr = gauss_legendre(rule == Shell9Rule::kReduced ? 2 : 3);
+  const Gauss& mr = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
   const bool separate_shear = rule == Shell9Rule::kSelective;
+  const bool mitc = rule == Shell9Rule::kMitc9;
   const int nt = static_cast<int>(thick.zeta.size());
-  const int nip = static_cast<int>(mr.x.size() * mr.x.size());
+  const int nip = mr.n * mr.n;
   out->point_rate.assign(static_cast<std::size_t>(nip * nt), 0.0);
   out->resultant.assign(static_cast<std::size_t>(nip), Shell9Resultant{});
-  const Rule1D sr = gauss_legendre(separate_shear ? 2 : static_cast<int>(mr.x.size()));
-  out->shear_force.assign(sr.x.size() * sr.x.size(), Eigen::Vector2d::Zero());
+  const Gauss& sr = gauss(separate_shear ? 2 : mr.n);
+  out->shear_force.assign(static_cast<std::size_t>(sr.n * sr.n), Eigen::Vector2d::Zero());
   const double Gs = mat.shear_correction * mat.shear_reference();
 
-  // Transverse shear at one point: Q = Gs gamma (penalty viscosity / elastic k G).
-  auto add_shear = [&](const Eigen::Matrix<double, 2, Eigen::Dynamic>& Bs, double dV,
+  // Stiffness: K = sum_p B_p^T (dV D_p) B_p over all strain rows of all points, as one product
+  // of the stacked operators (a rank-R update of the lower triangle; R = 5 per flow point).
+  int rows = 0;
+  if (want_k) {
+    const int R = separate_shear ? 3 * nip * nt + 2 * sr.n * sr.n * nt : 5 * nip * nt;
+    if (ws.L.rows() != R || ws.L.cols() != n) {
+      ws.L.resize(R, n);
+      ws.DL.resize(R, n);
+    }
+  }
+  VecD qv = q;
+
+  // Transverse shear rows at one point: Q = Gs gamma (penalty viscosity / elastic k G).
+  auto add_shear = [&](const Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxDof>& Bs, double dV,
                        double h_weight, int sp) {
-    const Eigen::Vector2d gam = Bs * q;
+    const Eigen::Vector2d gam = Bs * qv;
     out->force.noalias() += (Gs * dV) * (Bs.transpose() * gam);
-    // The matrix is symmetric: only its lower triangle is accumulated (lazyProduct evaluates just
-    // those coefficients; the blocked GEMM kernel costs more than it saves for thin factors), the
-    // upper one is copied at the end.
     if (want_k) {
-      out->stiffness.triangularView<Eigen::Lower>() += Bs.transpose().lazyProduct((Gs * dV) * Bs);
+      ws.L.middleRows(rows, 2) = Bs;
+      ws.DL.middleRows(rows, 2) = (Gs * dV) * Bs;
+      rows += 2;
     }
     out->potential += 0.5 * Gs * gam.squaredNorm() * dV;
     out->shear_force[static_cast<std::size_t>(sp)] += (Gs * h_weight) * gam;
   };
 
-  for (int k = 0; k < nt; ++k) {
-    const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
-    const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
-    std::optional<Mitc9TyingB> tying;
-    if (rule == Shell9Rule::kMitc9) tying = mitc9_tying(g, t);
-    int ip = 0;
-    for (std::size_t j = 0; j < mr.x.size(); ++j) {
-      for (std::size_t i = 0; i < mr.x.size(); ++i, ++ip) {
-        PointBasis pb;
-        const auto Bl = local_B(g, mr.x[i], mr.x[j], t, tying ? &*tying : nullptr, &pb);
-        const double dV = pb.detJ * mr.w[i] * mr.w[j] * wt;
-        const Eigen::Matrix<double, 3, Eigen::Dynamic> Bm = Bl.topRows<3>();
-        const Vec3 d = Bm * q;
+  if (mitc) mitc9_tying_poly(g, n, &ws.assumed, &ws.tying);
+  int ip = 0;
+  for (int j = 0; j < mr.n; ++j) {
+    for (int i = 0; i < mr.n; ++i, ++ip) {
+      const double r = mr.x[i], s = mr.x[j];
+      const Shape9 sh = lagrange9(r, s);
+      const SurfacePoint sp = surface_point(g, sh);
+      if (mitc) {
+        mitc9_assumed_poly(ws.tying, r, s, n, &ws.assumed);
+      } else {
+        covariant_poly(g, sh, sp, n, &ws.assumed);
+      }
+      const CovPoly& A = ws.assumed;
+      Shell9Resultant& R = out->resultant[static_cast<std::size_t>(ip)];
+      for (int k = 0; k < nt; ++k) {
+        const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
+        const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
+        const Basis b = basis_at(sp, t);
+        const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
+        const BMat Bl = b.T * Bcov;
+        const double dV = b.detJ * mr.w[i] * mr.w[j] * wt;
+        const auto Bm = Bl.topRows<3>();
+        const Vec3 d = Bm * qv;
         const int flow = ip * nt + k;
         const PointLaw p = evaluate_point(mat, state, flow, d, kind, tangent_weight);
         out->point_rate[static_cast<std::size_t>(flow)] = p.rate;
         out->force.noalias() += dV * (Bm.transpose() * p.stress);
         if (want_k) {
-          const Eigen::Matrix<double, 3, Eigen::Dynamic> DB = (dV * p.D) * Bm;
-          out->stiffness.triangularView<Eigen::Lower>() += Bm.transpose().lazyProduct(DB);
+          ws.L.middleRows(rows, 3) = Bm;
+          ws.DL.middleRows(rows, 3).noalias() = (dV * p.D) * Bm;
+          rows += 3;
         }
         out->potential += p.potential * dV;
         // Resultants per unit length: dz = h/2 dt, z = t h/2 (weights of [-1, 1] halved).
-        Shell9Resultant& R = out->resultant[static_cast<std::size_t>(ip)];
-        const double dz = 0.5 * pb.h * wt;
+        const double dz = 0.5 * sp.h * wt;
         R.N += dz * p.stress;
-        R.M += (dz * 0.5 * t * pb.h) * p.stress;
-        if (k == nt / 2) R.frame = pb.frame;  // the middle thickness point (or nearest above)
-        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, 0.5 * pb.h * wt, ip);
+        R.M += (dz * 0.5 * t * sp.h) * p.stress;
+        if (k == nt / 2) R.frame = b.frame;  // the middle thickness point (or nearest above)
+        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, 0.5 * sp.h * wt, ip);
       }
     }
-    if (separate_shear) {
-      int sp = 0;
-      for (std::size_t j = 0; j < sr.x.size(); ++j) {
-        for (std::size_t i = 0; i < sr.x.size(); ++i, ++sp) {
-          PointBasis pb;
-          const auto Bl = local_B(g, sr.x[i], sr.x[j], t, nullptr, &pb);
-          add_shear(Bl.bottomRows<2>(), pb.detJ * sr.w[i] * sr.w[j] * wt, 0.5 * pb.h * wt, sp);
+  }
+  if (separate_shear) {
+    int spi = 0;
+    for (int j = 0; j < sr.n; ++j) {
+      for (int i = 0; i < sr.n; ++i, ++spi) {
+        const Shape9 sh = lagrange9(sr.x[i], sr.x[j]);
+        const SurfacePoint sp = surface_point(g, sh);
+        covariant_poly(g, sh, sp, n, &ws.assumed);
+        const CovPoly& A = ws.assumed;
+        for (int k = 0; k < nt; ++k) {
+          const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
+          const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
+          const Basis b = basis_at(sp, t);
+          const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
+          const Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxDof> Bs =
+              b.T.bottomRows<2>() * Bcov;
+          add_shear(Bs, b.detJ * sr.w[i] * sr.w[j] * wt, 0.5 * sp.h * wt, spi);
         }
       }
     }
   }
 
   if (want_k) {
+    // Lower triangle by one triangular product (Eigen's blocked kernel), then mirrored.
+    out->stiffness.setZero(n, n);
+    out->stiffness.triangularView<Eigen::Lower>() +=
+        ws.L.topRows(rows).transpose() * ws.DL.topRows(rows);
     out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
   }
 

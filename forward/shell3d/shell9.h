@@ -45,11 +45,36 @@ struct Shell9Material {
   double shear_reference() const;
 };
 
+// Primal-dual tangent (material/flow_direction.h, here with the 3-component Hill law): at every
+// flow point the flow direction m = A d / (3 eh) is replaced in the rank-one part of the tangent
+// by a dual unknown n,
+//   D(n) = mu A + w 3 eh c sym(n (A d)^T),          c = tangent coefficient, w = tangent weight,
+// (n = m: the consistent tangent; n = 0: the secant matrix of the direct iteration). n follows
+// from the linearised dual equation 3 eh n - A d = 0 about an earlier evaluation ("anchor", with
+// rate d_a, direction m_a, cut-off rate eh_a and dual n_a), with dd = d - d_a the rate change of
+// the point (d is linear in the element velocities while the geometry is fixed):
+//   n_full = m_a + (A dd / 3 - n_a (m_a . dd)) / eh_a,
+// and n = n_full scaled back onto the ball |n|_* = sqrt(3 n^T A^-1 n) <= 1 (|m|_* = e / eh < 1).
+// D(n) is positive semi-definite for |n|_*, |m|_* <= 1 (flow_direction.h). Without an anchor
+// n = 0; the caller may also prescribe n (dual_given: a damped step of the duals).
+struct Shell9FlowDirection {
+  Vec3 d = Vec3::Zero();       // in-plane rate of the evaluation
+  Vec3 m = Vec3::Zero();       // its flow direction A d / (3 eh) (0 for a constant viscosity)
+  Vec3 n = Vec3::Zero();       // the dual its tangent used
+  Vec3 n_full = Vec3::Zero();  // n before the scaling onto the ball
+  double eh = 0.0;             // cut-off rate sqrt(e^2 + e_c^2)
+};
+
 // Per flow point state (viscous only), index = in-plane point * n_thickness + thickness point.
-// Null pointers mean 0.
+// Null pointers mean 0. With dual_record set, a kTangent evaluation uses the primal-dual tangent
+// (n = dual_given if set, else from dual_anchor if set, else 0) and writes every flow point's
+// record there.
 struct Shell9State {
   const double* sigma_y = nullptr;
   const double* hardening_viscosity = nullptr;
+  const Shell9FlowDirection* dual_anchor = nullptr;
+  const Vec3* dual_given = nullptr;
+  Shell9FlowDirection* dual_record = nullptr;
 };
 
 enum class Shell9Stiffness { kSecant, kTangent, kNone };

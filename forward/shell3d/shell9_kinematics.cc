@@ -79,7 +79,11 @@ Mat5X covariant_B(const Shell9Geometry& g, const Shape9& sh, const PointBasis& p
     Bd.row(2) = (t * c) * (Ns * gr + Nr * gs).transpose();
     Bd.row(3) = (c * N * gr + t * c * Nr * gt).transpose();
     Bd.row(4) = (c * N * gs + t * c * Ns * gt).transpose();
-    B.middleCols<3>(off) = Bv;
+    if (g.has_vel_frame) {
+      B.middleCols<3>(off) = Bv * g.vel_frame[a];
+    } else {
+      B.middleCols<3>(off) = Bv;
+    }
     const int nr = g.n_rot[a];
     B.middleCols(off + 3, nr) = Bd * g.rot_map[a].leftCols(nr);
     off += 3 + nr;

@@ -40,6 +40,11 @@ struct Shell9Geometry {
   std::array<double, 9> thickness;  // h_a [mm]
   std::array<Mat3, 9> rot_map;      // P_a: columns 0..n_rot-1 map rotation dofs to dV3_a
   std::array<int, 9> n_rot;         // 2 or 3
+  // Optional nodal velocity frames: with has_vel_frame, the 3 velocity dofs of node a are
+  // components in the frame vel_frame[a] (global velocity = vel_frame[a] * dofs), so element
+  // forces and matrices come out in those frames (the forming model's nodal frames, paper 6.7).
+  bool has_vel_frame = false;
+  std::array<Mat3, 9> vel_frame;
 
   // Element dofs: per node 3 velocities then n_rot rotation rates.
   int ndof() const;

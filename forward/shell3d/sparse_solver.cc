@@ -3,13 +3,19 @@
 namespace vs::shell3d {
 
 SparseSpdSolver::SparseSpdSolver(SolverKind preferred)
-    : preferred_(preferred), active_(preferred) {}
+    : requested_(preferred),
+      preferred_(preferred == SolverKind::kAuto ? SolverKind::kCholmodSupernodal : preferred),
+      active_(preferred_) {}
 
 SparseSpdSolver::~SparseSpdSolver() = default;
 
 void SparseSpdSolver::analyze(const SparseMatrix& A) {
   ++analyses_;
   ldlt_analyzed_ = false;
+  if (requested_ == SolverKind::kAuto) {
+    preferred_ =
+        A.rows() < kAutoCholmodDofs ? SolverKind::kSimplicialLDLT : SolverKind::kCholmodSupernodal;
+  }
   if (preferred_ == SolverKind::kCholmodSupernodal) {
     cholmod_ = std::make_unique<Cholmod>();
     cholmod_->analyzePattern(A);

@@ -145,6 +145,7 @@ void FormingModel::prepare(const FormingState& s) {
   v2_.resize(nn);
   mask_.assign(num_dofs(), 0);
   value_.assign(num_dofs(), 0.0);
+  dual_count_ = 0;  // a new solve: its first tangent is the secant matrix
   auto fix = [&](int node, int k, double v) {
     mask_[model_->dof(node, k)] = 1;
     value_[model_->dof(node, k)] = v;
@@ -223,7 +224,9 @@ Shell9Geometry FormingModel::geometry(const FormingState& s, int e) const {
     g.thickness[a] = s.thickness[i];
     g.rot_map[a] = rot_map_5dof(v1_[i], v2_[i]);
     g.n_rot[a] = 2;
+    g.vel_frame[a] = frame_[i];
   }
+  g.has_vel_frame = true;
   return g;
 }
 
@@ -270,46 +273,25 @@ std::vector<double> FormingModel::area_stretch(const std::vector<Vec3>& x) const
 }
 
 void FormingModel::element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe,
-                                  Shell9Stiffness kind, double theta,
-                                  ElementContribution* c) const {
+                                  Shell9Stiffness kind, double theta, ElementContribution* c) {
+  // Element dofs are 5 per node with the velocities in the nodal frames Q_a: the element takes
+  // the frames into its operator (B Q_a per node), so forces and the matrix K_local = T^T K T,
+  // T = diag(Q_a, I2), come out in the nodal frames directly.
   const Shell9Geometry g = geometry(s, e);
-  const auto& conn = mesh_.elements[e];
-  // Element dofs are 5 per node: rotate the velocities of each node to global axes.
-  Eigen::VectorXd q = qe;
-  for (int a = 0; a < 9; ++a) q.segment<3>(5 * a) = frame_[conn[a]] * qe.segment<3>(5 * a);
   const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
   const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
-  const Shell9State st{sigma_y_.data() + fp, hardening_viscosity_.data() + fp};
-  Shell9Output out;
-  shell9_evaluate(g, rule_, thick_, mat, st, q, kind, &out, theta);
-  for (int a = 0; a < 9; ++a) {
-    const Mat3& Q = frame_[conn[a]];
-    out.force.segment<3>(5 * a) = Q.transpose() * out.force.segment<3>(5 * a);
+  Shell9State st;
+  st.sigma_y = sigma_y_.data() + fp;
+  st.hardening_viscosity = hardening_viscosity_.data() + fp;
+  if (kind == Shell9Stiffness::kTangent) {
+    st.dual_record = dual_[2].points.data() + fp;
+    if (dual_mode_ == DualMode::kAnchor) st.dual_anchor = dual_[0].points.data() + fp;
+    if (dual_mode_ == DualMode::kGiven) st.dual_given = dual_given_.data() + fp;
   }
-  if (kind != Shell9Stiffness::kNone) {
-    // K_local = T^T K T with T = diag(Q_a, I2): rotate the 3 velocity rows and columns of every
-    // node (coefficient loops: the blocked product kernel is slow for 3 x 45 blocks).
-    Eigen::MatrixXd& K = out.stiffness;
-    const Eigen::Index n = K.cols();
-    for (int a = 0; a < 9; ++a) {
-      const Mat3 Qt = frame_[conn[a]].transpose();
-      for (Eigen::Index j = 0; j < n; ++j) {
-        const Vec3 v(K(5 * a, j), K(5 * a + 1, j), K(5 * a + 2, j));
-        const Vec3 w = Qt * v;
-        for (int k = 0; k < 3; ++k) K(5 * a + k, j) = w(k);
-      }
-    }
-    for (int a = 0; a < 9; ++a) {
-      const Mat3& Q = frame_[conn[a]];
-      for (Eigen::Index i = 0; i < n; ++i) {
-        const Eigen::RowVector3d v(K(i, 5 * a), K(i, 5 * a + 1), K(i, 5 * a + 2));
-        const Eigen::RowVector3d w = v * Q;
-        for (int k = 0; k < 3; ++k) K(i, 5 * a + k) = w(k);
-      }
-    }
-  }
-  c->force = std::move(out.force);
-  c->stiffness = std::move(out.stiffness);
+  thread_local Shell9Output out;
+  shell9_evaluate(g, rule_, thick_, mat, st, qe, kind, &out, theta);
+  c->force.swap(out.force);
+  if (kind != Shell9Stiffness::kNone) c->stiffness.swap(out.stiffness);
   c->potential = out.potential;
 }
 
@@ -344,13 +326,65 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
   }
 }
 
+void FormingModel::dual_prepare(const Eigen::VectorXd& x) {
+  // Which duals the tangent at x uses (shell9.h, Shell9FlowDirection), from the last two tangent
+  // evaluations c1 (older) and c2 of this solve, as the axisymmetric AxisymStepProblem does with
+  // the solver's step information:
+  //   x = x(c2) (a repeated evaluation, e.g. after a lagged friction update): c2's duals;
+  //   x = x(c1) + alpha (x(c2) - x(c1)), 0 < alpha < 1 (the line search damped the step from c1
+  //     whose full step c2 was): the damped dual step n(c1) + alpha (n_full(c2) - n(c1)), scaled
+  //     onto the ball;
+  //   otherwise (c2 became the iterate and x is its next step): linearised about c2;
+  //   no evaluation yet: n = 0 (the secant matrix).
+  const std::size_t size = static_cast<std::size_t>(num_elements() * flow_points_);
+  dual_[2].points.resize(size);
+  dual_mode_ = dual_count_ == 0 ? DualMode::kNone : DualMode::kAnchor;
+  dual_same_point_ = false;
+  if (dual_count_ >= 1 && x == dual_[0].x) {
+    dual_same_point_ = true;
+    dual_mode_ = DualMode::kGiven;
+    dual_given_.resize(size);
+    for (std::size_t k = 0; k < size; ++k) dual_given_[k] = dual_[0].points[k].n;
+    return;
+  }
+  if (dual_count_ < 2) return;
+  const Eigen::VectorXd step = dual_[0].x - dual_[1].x;
+  const double step2 = step.squaredNorm();
+  if (step2 == 0.0) return;
+  const Eigen::VectorXd taken = x - dual_[1].x;
+  const double alpha = taken.dot(step) / step2;
+  if (!(alpha > 0.0 && alpha < 1.0) || (taken - alpha * step).norm() > 1e-10 * std::sqrt(step2)) {
+    return;
+  }
+  dual_mode_ = DualMode::kGiven;
+  dual_given_.resize(size);
+  for (std::size_t k = 0; k < size; ++k) {
+    const Vec3& n1 = dual_[1].points[k].n;
+    Vec3 n = n1 + alpha * (dual_[0].points[k].n_full - n1);
+    const double norm2 = hill_.dual_norm_squared(n);
+    if (norm2 > 1.0) n /= std::sqrt(norm2);
+    dual_given_[k] = n;
+  }
+}
+
+void FormingModel::dual_finish(const Eigen::VectorXd& x) {
+  // The new record becomes c2; a repeated point replaces c2 instead of pushing it.
+  dual_[2].x = x;
+  if (!dual_same_point_) std::swap(dual_[1], dual_[0]);
+  std::swap(dual_[0], dual_[2]);
+  dual_count_ = std::min(2, dual_count_ + (dual_same_point_ ? 0 : 1));
+}
+
 void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind,
                             double theta, FormingSystem* out) {
   const bool want = kind != Shell9Stiffness::kNone;
   const ElementKernel kernel = [&](int e, const Eigen::VectorXd& qe, ElementContribution* c) {
     element_kernel(s, e, qe, kind, theta, c);
   };
+  const bool dual = kind == Shell9Stiffness::kTangent;
+  if (dual) dual_prepare(x);
   out->potential = assembler_->assemble(kernel, x, want, &out->internal_force);
+  if (dual) dual_finish(x);
   out->residual = out->internal_force;
   friction(s, x, want, theta, kind, out);
   for (int k = 0; k < num_dofs(); ++k)
@@ -375,12 +409,12 @@ void FormingModel::point_rates(const FormingState& s, const Eigen::VectorXd& x,
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
     const Shell9Geometry g = geometry(s, e);
-    const auto& conn = mesh_.elements[e];
-    Eigen::VectorXd q = assembler_->gather(e, x);
-    for (int a = 0; a < 9; ++a) q.segment<3>(5 * a) = frame_[conn[a]] * q.segment<3>(5 * a);
+    const Eigen::VectorXd q = assembler_->gather(e, x);
     const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
     const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
-    const Shell9State st{sigma_y_.data() + fp, hardening_viscosity_.data() + fp};
+    Shell9State st;
+    st.sigma_y = sigma_y_.data() + fp;
+    st.hardening_viscosity = hardening_viscosity_.data() + fp;
     Shell9Output out;
     shell9_evaluate(g, rule_, thick_, mat, st, q, Shell9Stiffness::kNone, &out);
     (*rates)[e] = std::move(out.point_rate);

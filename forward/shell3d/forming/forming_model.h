@@ -113,7 +113,12 @@ class FormingModel {
                  std::vector<Vec3>* omega) const;
 
   // Residual, potential and (kind != kNone) matrix at local velocities x. kTangent blends secant
-  // and tangent with theta. The matrix has prescribed rows and columns decoupled (diagonal kept).
+  // and tangent with theta; its rank-one part uses the primal-dual flow directions (shell9.h,
+  // Shell9FlowDirection) from the previous kTangent evaluations since prepare() (dual_prepare():
+  // linearised about the last one, or its damped step; none: the first tangent of a solve is the
+  // secant matrix, so Newton solves start without direct iterations). Only the matrix depends on
+  // that history, never the residual or the potential.
+  // The matrix has prescribed rows and columns decoupled (diagonal kept).
   void evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind, double theta,
                 FormingSystem* out);
   double potential(const FormingState& s, const Eigen::VectorXd& x);
@@ -123,7 +128,8 @@ class FormingModel {
   void point_rates(const FormingState& s, const Eigen::VectorXd& x,
                    std::vector<std::vector<double>>* rates) const;
 
-  // Element geometry of state s (directors, nodal thickness, director frames of prepare()).
+  // Element geometry of state s (directors, nodal thickness, director frames and nodal velocity
+  // frames of prepare()).
   Shell9Geometry geometry(const FormingState& s, int e) const;
   // Lumped nodal mid-surface areas integral N_i dA of configuration x.
   std::vector<double> lumped_areas(const std::vector<Vec3>& x) const;
@@ -146,7 +152,7 @@ class FormingModel {
 
  private:
   void element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe, Shell9Stiffness kind,
-                      double theta, ElementContribution* c) const;
+                      double theta, ElementContribution* c);
   void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
                 Shell9Stiffness kind, FormingSystem* out);
 
@@ -174,6 +180,21 @@ class FormingModel {
   std::vector<Vec3> v1_, v2_;
   std::vector<char> mask_;
   std::vector<double> value_;
+  // Primal-dual tangent (shell9.h, Shell9FlowDirection): the records (per element and flow
+  // point) and velocities of the last two tangent evaluations since prepare(), and the buffers
+  // the current one writes / reads (dual_given_: a damped dual step).
+  struct DualRecord {
+    std::vector<Shell9FlowDirection> points;
+    Eigen::VectorXd x;
+  };
+  void dual_prepare(const Eigen::VectorXd& x);
+  void dual_finish(const Eigen::VectorXd& x);
+  enum class DualMode { kNone, kAnchor, kGiven };
+  DualRecord dual_[3];  // [0] the last, [1] the one before, [2] the one being written
+  int dual_count_ = 0;  // valid records in dual_[0..1]
+  DualMode dual_mode_ = DualMode::kNone;
+  bool dual_same_point_ = false;  // the current evaluation repeats the last one's x
+  std::vector<Vec3> dual_given_;
 };
 
 }  // namespace vs::shell3d

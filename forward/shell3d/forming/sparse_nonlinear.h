@@ -1,12 +1,15 @@
 // Nonlinear solve of one forming step on a sparse system: the sparse analogue of
 // forward/solver/nonlinear_solver.h (same options, summary and strategy, which that header
-// explains: direct (secant) iterations start each solve, then Newton with the tangent weight
-// theta adapted like a trust region and an Armijo line search on the convex flow potential; a
-// rejected step falls back to the always-SPD direct iteration). The matrix lives in the problem;
-// the CHOLMOD symbolic analysis is done once per solver object (the pattern never changes).
-// One difference: the full Newton step is tried with a complete evaluation (residual and matrix
-// for the next iteration's tangent weight) instead of a potential-only one, so an accepted full
-// step costs one assembly instead of two; backtracking uses potential-only evaluations.
+// explains: Newton with the tangent weight theta adapted like a trust region and an Armijo line
+// search on the convex flow potential; a rejected step falls back to the always-SPD direct
+// iteration). The problem's tangent is taken to be self-starting (the forming model's primal-dual
+// tangent, forming_model.h: its first matrix in a solve is the direct iteration's), so every solve
+// starts at weight 1 without direct iterations. The matrix lives in the problem; the sparse
+// symbolic analysis is done once per solver object (the pattern never changes).
+// Differences: the full Newton step is tried with a complete evaluation (residual and matrix for
+// the next iteration) instead of a potential-only one, so an accepted full step costs one
+// assembly instead of two; backtracking uses potential-only evaluations; a step that already
+// passes the convergence test ends the solve without evaluating its end point.
 #pragma once
 
 #include <Eigen/Core>
