@@ -35,6 +35,14 @@ struct NodeContact {
   // Sticking tool, edge of the stuck patch: the node touches without friction (normal
   // constraint only) until the patch grows past it (see simulate.cc, Driver::attach).
   bool slip_edge = false;
+  // Squeeze (ironing): the node touches `tool` and the other surface of the sheet reaches
+  // `squeeze_tool` (e.g. a cup wall between the punch and the die wall); the thickness of its
+  // elements is held at the clearance between the two tool surfaces through the node. The second
+  // tool's pressure force (full 360 degrees, lagged one converged state) adds friction on both
+  // faces.
+  int squeeze_tool = -1;
+  double clearance_mm = 0.0;
+  double squeeze_force_N = 0.0;
 };
 
 // Everything that changes from step to step.
@@ -58,6 +66,8 @@ struct AxisymSystem {
   // Fixed-gap blank holder: contact pressure on the flange per element [MPa] (0 where the flange
   // is thinner than the gap); empty without a fixed-gap holder.
   std::vector<double> gap_pressure;
+  std::vector<double> squeeze_pressure;  // per element [MPa] (squeeze constraint, see AxisymModel)
+  std::vector<double> squeeze_friction;  // per node: friction of the squeezing tool (local t)
   // Element sums of evaluate_elements() (global frame, before friction and prescribed dofs):
   // the stiffness, K_elements = secant with kSecant or split kTangent, secant + element_weight *
   // tangent part with a kTangent at a fixed weight; and the tangent part with a split kTangent.
@@ -143,6 +153,11 @@ class AxisymModel {
   void set_consistent_friction(bool on) { consistent_friction_ = on; }
   bool consistent_friction() const { return consistent_friction_; }
   void update_sandwiched(AxisymState* s) const;
+  // Marks the contact nodes whose other surface reaches a second tool (not a fixed-gap holder,
+  // which has its own gap model) and sets their clearance; clears the others.
+  void update_squeezed(AxisymState* s) const;
+  // Squeeze forces (full 360 degrees) on the squeezed nodes from the element pressures of `sys`.
+  std::vector<double> squeeze_forces(const AxisymState& s, const AxisymSystem& sys) const;
   // Fixed-gap holder: nodal holder forces (full 360 degrees) from the element gap pressures of
   // `sys`, each element's pressure times its mid-surface area shared equally by its two nodes.
   std::vector<double> holder_forces_from_gap(const AxisymState& s, const AxisymSystem& sys) const;
@@ -190,6 +205,9 @@ class AxisymModel {
   // Fixed-gap holder penalty on flange elements (see the .cc); fills out->gap_pressure.
   void add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
                       AxisymSystem* out) const;
+  // Squeeze (ironing) penalty on elements with a squeezed node; fills out->squeeze_pressure.
+  void add_squeeze(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
+                   AxisymSystem* out) const;
   // v <- global-frame velocities of the local-frame v, in place.
   void rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const;
   // normal_N: the normal reaction that sets the tool's Coulomb limit (the lagged one, or the

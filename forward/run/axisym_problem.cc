@@ -189,10 +189,19 @@ void AxisymStepProblem::finish(const Eigen::VectorXd& x) {
   model_.evaluate(*state_, x, StiffnessKind::kNone, &sys);
   reactions(sys, &normal_);
   if (model_.fixed_gap_holder()) holder_forces_ = model_.holder_forces_from_gap(*state_, sys);
+  squeeze_forces_ = model_.squeeze_forces(*state_, sys);
+  // The punch's force on the sheet: at a node touching it, the node force (element forces minus
+  // holder loads: the punch's reaction and friction) plus the friction of a squeezing second tool
+  // (which the element forces also balance); at a node the punch squeezes, that friction.
   punch_force_ = 0.0;
   for (int i = 0; i < model_.num_nodes(); ++i) {
-    if (state_->contact[i].tool == model_.punch_index()) {
-      punch_force_ += model_.node_force(sys, i).y();
+    const NodeContact& c = state_->contact[i];
+    const double f_squeeze = sys.squeeze_friction.empty() ? 0.0 : sys.squeeze_friction[i];
+    const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
+    if (c.tool == model_.punch_index()) {
+      punch_force_ += model_.node_force(sys, i).y() + f_squeeze * t.y();
+    } else if (c.tool >= 0 && c.squeeze_tool == model_.punch_index()) {
+      punch_force_ -= f_squeeze * t.y();
     }
   }
   point_rates_ = std::move(sys.point_rates);

@@ -37,6 +37,8 @@ class AxisymStepProblem : public NonlinearProblem {
   // Fixed-gap holder: nodal holder forces from the gap pressure at the last finish() (empty
   // otherwise).
   const std::vector<double>& holder_forces() const { return holder_forces_; }
+  // Squeeze forces of the squeezed nodes at the last finish() (AxisymModel::squeeze_forces).
+  const std::vector<double>& squeeze_forces() const { return squeeze_forces_; }
   // Normal reaction of each contact node (compressive > 0) at the last finish().
   const std::vector<double>& normal_reactions() const { return normal_; }
   const std::vector<std::vector<double>>& point_rates() const { return point_rates_; }
@@ -86,6 +88,7 @@ class AxisymStepProblem : public NonlinearProblem {
   // Adaptive relaxation of the lagged normal forces, per node.
   std::vector<double> relax_, last_change_;
   std::vector<double> holder_forces_;
+  std::vector<double> squeeze_forces_;
 };
 
 }  // namespace vs

@@ -134,9 +134,15 @@ void Driver::attach(AxisymState& s, int node, int tool) {
   // attach-release round at every step). The consistent state is touching with zero reaction
   // and zero friction, so it slides without friction until both neighbours touch the tool.
   const bool slip = t.sticking() && (nc.tool == tool ? nc.slip_edge : was_released_[node] != 0);
+  const NodeContact before = nc;
   nc = NodeContact{};
   nc.tool = tool;
   nc.slip_edge = slip;
+  if (before.tool == tool) {  // the squeeze state is kept while the node stays on its tool
+    nc.squeeze_tool = before.squeeze_tool;
+    nc.clearance_mm = before.clearance_mm;
+    nc.squeeze_force_N = before.squeeze_force_N;
+  }
   nc.normal = c.normal;
   nc.normal_force_N = keep_force;
   nc.on_die_face = t.kind() == ToolKind::kDie && c.primitive == 0;
@@ -204,6 +210,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
   AxisymState& s = out->state;
   model_.place_tools(s);
   model_.update_sandwiched(&s);
+  model_.update_squeezed(&s);
   model_.freeze_material(s, dt_predicted);
   released_.assign(model_.num_nodes(), 0);
   constexpr int kMaxRounds = 20;
@@ -268,7 +275,8 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
     std::vector<int> release;
     for (int i = 0; i < model_.num_nodes(); ++i) {
       const int tool = s.contact[i].tool;
-      if (tool < 0 || model_.sandwiched(s.contact[i])) continue;
+      // A squeezed node touches both tools whatever its reaction on one of them.
+      if (tool < 0 || model_.sandwiched(s.contact[i]) || s.contact[i].squeeze_tool >= 0) continue;
       const bool on_axis = i == 0 && model_.initial_radius(0) == 0.0;
       const bool next = same_tool(i + 1, tool);
       const bool prev = on_axis ? next : same_tool(i - 1, tool);
@@ -279,6 +287,10 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
       if (smoothed < -kReleaseFraction * scale) release.push_back(i);
     }
     for (int i : release) {
+      if (options_.verbose) {
+        std::fprintf(stderr, "  release node %d (tool %d, r0 %.3g mm, reaction %.4g N)\n", i,
+                     s.contact[i].tool, model_.initial_radius(i), N[i]);
+      }
       s.contact[i] = NodeContact{};
       released_[i] = 1;
       was_released_[i] = 1;
@@ -299,6 +311,12 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
         for (int i = 0; i < model_.num_nodes(); ++i) {
           s.contact[i].holder_force_N = AxisymModel::in_gap(s.contact[i]) ? hf[i] : 0.0;
         }
+      }
+      // Squeeze forces: lagged one converged state, as the fixed-gap holder's.
+      const std::vector<double>& sq = problem->squeeze_forces();
+      for (int i = 0; i < model_.num_nodes(); ++i) {
+        NodeContact& c = s.contact[i];
+        c.squeeze_force_N = c.squeeze_tool >= 0 ? sq[i] : 0.0;
       }
       out->punch_force = problem->punch_force();
       out->max_rate = problem->max_point_rate();
