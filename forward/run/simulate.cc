@@ -79,8 +79,8 @@ class Driver {
   // shortest initial element (the stability limit of the explicit geometry update).
   double travel_increment() const { return grid_increment_mm_; }
   // Squeeze check of a converged state: a node in contact with one tool whose other surface
-  // lies inside another tool (a rim thicker than the punch-die clearance). Contact is one tool
-  // per node, so the second tool does not act: ironing is not modelled and the run says so.
+  // lies inside another tool by more than 2 % of the thickness, i.e. more than the ironing
+  // constraint (AxisymModel::update_squeezed) lets through: the run says so.
   void note_squeeze(const AxisymState& s);
   // Timings, counters and the squeeze warning into the result, on every way out of run().
   void finish_result(double total_s, RunResult* result);
@@ -431,9 +431,8 @@ void Driver::finish_result(double total_s, RunResult* result) {
   if (squeeze_travel_mm_ >= 0.0) {
     result->warnings.push_back(fmt::format(
         "from punch travel {:.2f} mm the sheet is squeezed between tools '{}' (node at initial "
-        "radius {:.3g} mm overlaps the second tool by {:.3g} mm, up to {:.3g} mm later): contact "
-        "is one tool per node, so ironing is not modelled and results beyond that travel are not "
-        "trustworthy",
+        "radius {:.3g} mm overlaps the second tool by {:.3g} mm, up to {:.3g} mm later, more "
+        "than the ironing constraint allows): results beyond that travel are not trustworthy",
         squeeze_travel_mm_, squeeze_tools_, squeeze_r0_mm_, squeeze_first_mm_, squeeze_max_mm_));
   }
 }
