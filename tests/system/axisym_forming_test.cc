@@ -198,12 +198,12 @@ TEST(AxisymForming, DeepDrawingAndCupScenesRunToTheEnd) {
 
 TEST(AxisymForming, CupRimIsIronedToTheClearance) {
   // ex3: flat punch radius 30 mm, die opening 31.2 mm: clearance 1.2 mm for a 1 mm sheet whose
-  // rim thickens to ~1.3-1.45 mm in the flange (R = 0.41). At 45 mm the drawn wall between punch
+  // rim thickens to ~1.3-1.45 mm in the flange (R = 0.41). At 42 mm the drawn wall between punch
   // and die wall is held at the clearance (penalty: to ~1 %), and the run completes.
   const RunResult r = simulate(load_with("ex3_flat_punch_cup.toml", {{"output.history", "false"}}));
   ASSERT_TRUE(r.completed()) << r.message;
   const Profile& p = r.profiles.back();
-  ASSERT_NEAR(p.punch_travel_mm, 45.0, 1e-9);
+  ASSERT_NEAR(p.punch_travel_mm, 42.0, 1e-9);
   int in_bore = 0;
   double thickest_in_bore = 0.0, thickest_before = 0.0;
   for (std::size_t e = 0; e < p.r_mm.size(); ++e) {
