@@ -94,9 +94,11 @@ int main(int argc, char** argv) {
 
   std::string md = fmt::format(
       "Base: `ex1_hemispherical_stretching.toml` (friction 0.04, 50 elements){}. Machine: {}. "
-      "Equilibrium = max |F_vertical / F_punch - 1| over circles in the free stretch carrying the "
-      "largest vertical force (the unsupported wall between punch and die), at every output "
-      "travel. Volume drift = max |V - V0| / V0. A case "
+      "Equilibrium = max |F_vertical - F_punch,inside| / F_punch over circles in the free stretch "
+      "carrying the largest vertical force (the unsupported wall between punch and die), at every "
+      "output travel; F_punch,inside is the punch force on the nodes inside the circle (all of it "
+      "unless a cup wall outside is ironed against the punch). Volume drift = max |V - V0| / V0. A "
+      "case "
       "is `ok` when it completes and passes every check, `stopped` when the solver ends early "
       "with a message, `GARBAGE` when it returns without stopping but fails a check, `ok*` when "
       "it passes but the volume drifts above round-off (1e-9) or the solver raises a warning (e.g. "

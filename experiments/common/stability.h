@@ -37,7 +37,7 @@ struct StabilityRow {
   double volume_drift = 0.0;          // max |V - V0| / V0
   double volume_drift_later = 0.0;    // the same from the first advanced step on
   double min_thickness_ratio = kNaN;  // min h / h0 over the run
-  double equilibrium = kNaN;          // max |F_vertical / F_punch - 1| over free-region circles
+  double equilibrium = kNaN;  // max |F_vertical - F_punch,inside| / F_punch, free-region circles
   double peak_N = kNaN;
   double peak_travel_mm = kNaN;
   bool finite = true;
@@ -50,11 +50,19 @@ struct StabilityRow {
 // force, over the free (contact-free) stretch of at least 3 elements that carries the largest
 // mean |vertical force|: the unsupported wall between punch and die (a free flat bottom carries
 // nothing, a stretch beyond the die only part of the load). The elements next to a contact zone
-// are skipped (their end node carries a reaction).
+// are skipped (their end node carries a reaction). The force through the circle of element e is
+// compared with the punch force on the nodes inside it (Profile::punch_force_node_N, nodes 0..e;
+// the whole punch force if that is empty): once a cup wall outside the circle is ironed against
+// the punch wall, the punch acts there too (friction).
 inline double equilibrium_error(const vs::Profile& p, double punch_force) {
   const std::vector<int>& c = p.contact;
   const std::size_t n = c.size();
   if (p.vertical_force_N.size() != n || !(std::abs(punch_force) > 0.0)) return kNaN;
+  std::vector<double> inside(n, punch_force);
+  if (p.punch_force_node_N.size() == n + 1) {
+    double sum = 0.0;
+    for (std::size_t e = 0; e < n; ++e) inside[e] = (sum += p.punch_force_node_N[e]);
+  }
   double best_mean = -1.0, worst = kNaN;
   for (std::size_t i = 0; i < n;) {
     if (c[i]) {
@@ -69,7 +77,7 @@ inline double equilibrium_error(const vs::Profile& p, double punch_force) {
       double mean = 0.0, dev = 0.0;
       for (std::size_t e = a; e < b; ++e) {
         mean += std::abs(p.vertical_force_N[e]) / static_cast<double>(b - a);
-        dev = std::max(dev, std::abs(p.vertical_force_N[e] / punch_force - 1.0));
+        dev = std::max(dev, std::abs(p.vertical_force_N[e] - inside[e]) / std::abs(punch_force));
       }
       if (b > a && mean > best_mean) {
         best_mean = mean;

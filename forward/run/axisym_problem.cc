@@ -194,15 +194,17 @@ void AxisymStepProblem::finish(const Eigen::VectorXd& x) {
   // holder loads: the punch's reaction and friction) plus the friction of a squeezing second tool
   // (which the element forces also balance); at a node the punch squeezes, that friction.
   punch_force_ = 0.0;
+  punch_node_forces_.assign(model_.num_nodes(), 0.0);
   for (int i = 0; i < model_.num_nodes(); ++i) {
     const NodeContact& c = state_->contact[i];
     const double f_squeeze = sys.squeeze_friction.empty() ? 0.0 : sys.squeeze_friction[i];
     const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
     if (c.tool == model_.punch_index()) {
-      punch_force_ += model_.node_force(sys, i).y() + f_squeeze * t.y();
+      punch_node_forces_[i] = model_.node_force(sys, i).y() + f_squeeze * t.y();
     } else if (c.tool >= 0 && c.squeeze_tool == model_.punch_index()) {
-      punch_force_ -= f_squeeze * t.y();
+      punch_node_forces_[i] = -f_squeeze * t.y();
     }
+    punch_force_ += punch_node_forces_[i];
   }
   point_rates_ = std::move(sys.point_rates);
   resultants_ = std::move(sys.resultants);

@@ -34,6 +34,8 @@ class AxisymStepProblem : public NonlinearProblem {
   void finish(const Eigen::VectorXd& x);
 
   double punch_force() const { return punch_force_; }
+  // Axial force of the punch on each node at the last finish() (their sum is punch_force()).
+  const std::vector<double>& punch_node_forces() const { return punch_node_forces_; }
   // Fixed-gap holder: nodal holder forces from the gap pressure at the last finish() (empty
   // otherwise).
   const std::vector<double>& holder_forces() const { return holder_forces_; }
@@ -89,6 +91,7 @@ class AxisymStepProblem : public NonlinearProblem {
   std::vector<double> relax_, last_change_;
   std::vector<double> holder_forces_;
   std::vector<double> squeeze_forces_;
+  std::vector<double> punch_node_forces_;
 };
 
 }  // namespace vs

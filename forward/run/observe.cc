@@ -7,8 +7,10 @@
 namespace vs {
 
 Profile make_profile(const AxisymModel& model, const AxisymState& s, double punch_travel_mm,
-                     const std::vector<Vec5>& resultants) {
+                     const std::vector<Vec5>& resultants,
+                     const std::vector<double>& punch_node_force) {
   Profile p;
+  p.punch_force_node_N = punch_node_force;
   p.punch_travel_mm = punch_travel_mm;
   const std::size_t np = model.rule().zeta.size();
   const double h0 = model.initial_thickness();

@@ -42,6 +42,10 @@ struct Profile {
   // Axial force carried through the circle at the element midpoint, -2 pi r (N_s t_z + Q n_z):
   // in the unsupported region it equals the punch force (exact equilibrium check).
   std::vector<double> vertical_force_N;
+  // Axial force of the punch on each node (their sum is the punch force; empty if unknown): the
+  // force through a circle equals the punch force on the nodes inside it when no other tool
+  // touches them, also once a cup wall outside the circle is ironed against the punch.
+  std::vector<double> punch_force_node_N;
   std::vector<double> node_r_mm;  // deformed shape: nodes of the meridian
   std::vector<double> node_z_mm;
 };

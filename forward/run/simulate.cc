@@ -47,6 +47,7 @@ struct Solved {
   int active_set_rounds = 0;
   // Flow directions of the converged solve (primal-dual unknowns), the next solve's start.
   std::vector<double> directions;
+  std::vector<double> punch_node_force;  // axial punch force on each node [N]
 };
 
 class Driver {
@@ -319,6 +320,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
         c.squeeze_force_N = c.squeeze_tool >= 0 ? sq[i] : 0.0;
       }
       out->punch_force = problem->punch_force();
+      out->punch_node_force = problem->punch_node_forces();
       out->max_rate = problem->max_point_rate();
       out->point_rates = problem->point_rates();
       out->resultants = problem->resultants();
@@ -527,11 +529,13 @@ RunResult Driver::run() {
     result.total_iterations += rec.iterations;
     if (options_.on_step) options_.on_step(rec);
     while (next_output < outputs.size() && std::abs(outputs[next_output] - T) <= 1e-9 * total) {
-      result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
+      result.profiles.push_back(
+          make_profile(model_, current.state, T, current.resultants, current.punch_node_force));
       ++next_output;
     }
     if (scene_.output.history)
-      result.history.push_back(make_profile(model_, current.state, T, current.resultants));
+      result.history.push_back(
+          make_profile(model_, current.state, T, current.resultants, current.punch_node_force));
     if (T >= total * (1.0 - 1e-12)) break;
 
     // Next configuration, with cut-back on failure.
@@ -549,7 +553,8 @@ RunResult Driver::run() {
         result.termination = Termination::kFailed;
         result.message = fmt::format("stopped at punch travel {:.4f} mm after {} cut-backs: {}", T,
                                      cutbacks_since_success, why);
-        result.profiles.push_back(make_profile(model_, current.state, T, current.resultants));
+        result.profiles.push_back(
+            make_profile(model_, current.state, T, current.resultants, current.punch_node_force));
         finish_result(seconds_since(t_start), &result);
         return result;
       }
@@ -590,8 +595,8 @@ RunResult Driver::run() {
     }
     current = std::move(next);
   }
-  result.profiles.push_back(
-      make_profile(model_, current.state, travel(current.state), current.resultants));
+  result.profiles.push_back(make_profile(model_, current.state, travel(current.state),
+                                         current.resultants, current.punch_node_force));
   if (result.completed()) {
     result.message = fmt::format("completed: punch travel {:.4f} mm in {} steps",
                                  travel(current.state), result.steps.size());

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../../experiments/common/stability.h"
 #include "forming_util.h"
 
 namespace vs {
@@ -219,6 +220,11 @@ TEST(AxisymForming, CupRimIsIronedToTheClearance) {
   EXPECT_GT(in_bore, 5);
   EXPECT_GT(thickest_before, 1.25);  // without ironing the wall would carry this
   EXPECT_LT(thickest_in_bore, 1.2 * 1.02);
+  // Equilibrium with the ironed wall: the force through the free wall circles equals the punch
+  // force on the nodes inside them (the rest is the punch-wall friction on the ironed wall).
+  const double F = r.steps.back().punch_force_N;
+  const double eq = vsx::equilibrium_error(p, F);
+  EXPECT_LT(eq, 1e-3) << "punch force " << F;
 }
 
 TEST(AxisymForming, StretchingIsNotSqueezed) {
