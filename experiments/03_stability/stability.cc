@@ -49,21 +49,30 @@ int main(int argc, char** argv) {
   }
 
   Table t;
-  t.header = {"group",        "case",     "verdict",     "reached / target mm", "steps",
-              "iter/step",    "max iter", "cut-backs",   "zero-length steps",   "worst residual",
-              "volume drift", "min h/h0", "equilibrium", "peak load N (at mm)", "wall ms"};
+  t.header = {
+      "group",      "case",         "verdict",   "reached / target mm", "steps",
+      "iter/step",  "max iter",     "cut-backs", "zero-length steps",   "worst residual",
+      "cond. est.", "volume drift", "min h/h0",  "equilibrium",         "peak load N (at mm)",
+      "wall ms"};
   Table csv;
-  csv.header = {"group",           "case",       "scene",          "overrides",     "verdict",
-                "reached_mm",      "target_mm",  "steps",          "iter_per_step", "max_iter",
-                "cutbacks",        "zero_steps", "worst_residual", "volume_drift",  "min_h_over_h0",
-                "equilibrium_err", "peak_N",     "peak_travel_mm", "wall_ms",       "message",
-                "problems",        "warnings"};
+  csv.header = {"group",           "case",
+                "scene",           "overrides",
+                "verdict",         "reached_mm",
+                "target_mm",       "steps",
+                "iter_per_step",   "max_iter",
+                "cutbacks",        "zero_steps",
+                "worst_residual",  "condition_estimate",
+                "volume_drift",    "min_h_over_h0",
+                "equilibrium_err", "peak_N",
+                "peak_travel_mm",  "wall_ms",
+                "message",         "problems",
+                "warnings"};
   for (const StabilityRow& r : rows) {
     t.add({r.c.group, r.c.name, r.verdict,
            fmt::format("{:.2f} / {:.4g}", r.reached_mm, r.target_travel_mm),
            std::to_string(r.steps), fmt::format("{:.1f}", r.iter_per_step),
            std::to_string(r.max_iter), std::to_string(r.cutbacks), std::to_string(r.zero_steps),
-           fmt::format("{:.1e}", r.worst_residual),
+           fmt::format("{:.1e}", r.worst_residual), fmt::format("{:.1e}", r.condition),
            fmt::format("{:.1e} ({:.0e})", r.volume_drift, r.volume_drift_later),
            fmt::format("{:.3f}", r.min_thickness_ratio), pct(r.equilibrium),
            fmt::format("{:.4g} ({:.1f})", r.peak_N, r.peak_travel_mm), ms(r.run.wall_s)});
@@ -80,6 +89,7 @@ int main(int argc, char** argv) {
              std::to_string(r.cutbacks),
              std::to_string(r.zero_steps),
              g4(r.worst_residual),
+             g4(r.condition),
              g4(r.volume_drift),
              g4(r.min_thickness_ratio),
              g4(r.equilibrium),
@@ -102,9 +112,10 @@ int main(int argc, char** argv) {
       "is `ok` when it completes and passes every check, `stopped` when the solver ends early "
       "with a message, `GARBAGE` when it returns without stopping but fails a check, `ok*` when "
       "it passes but the volume drifts above round-off (1e-9) or the solver raises a warning (e.g. "
-      "elements shorter than the thickness). Conditioning "
-      "estimates are not exposed by `vs::simulate` (iterations and cut-backs stand in for "
-      "them).\n\n",
+      "elements shorter than the thickness). Cond. est. = the largest (max / min)^2 of the "
+      "Cholesky pivots of the Newton matrices over the accepted solves, free dofs only "
+      "(`RunResult::max_condition_estimate`): a lower bound of their 2-norm condition "
+      "numbers.\n\n",
       args.quick ? ", travel 5 mm (quick)" : "", machine_description());
   md += t.markdown() + "\n";
 

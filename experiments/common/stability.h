@@ -32,9 +32,10 @@ struct StabilityRow {
   double iter_per_step = kNaN;
   int max_iter = 0;
   int cutbacks = 0;
-  int zero_steps = 0;                 // accepted steps that did not advance the punch
-  double worst_residual = 0.0;        // largest final relative residual of an accepted step
-  double volume_drift = 0.0;          // max |V - V0| / V0
+  int zero_steps = 0;           // accepted steps that did not advance the punch
+  double worst_residual = 0.0;  // largest final relative residual of an accepted step
+  double condition = kNaN;    // largest conditioning estimate (lower bound) of the Newton matrices
+  double volume_drift = 0.0;  // max |V - V0| / V0
   double volume_drift_later = 0.0;    // the same from the first advanced step on
   double min_thickness_ratio = kNaN;  // min h / h0 over the run
   double equilibrium = kNaN;  // max |F_vertical - F_punch,inside| / F_punch, free-region circles
@@ -101,6 +102,7 @@ inline StabilityRow evaluate_stability(const std::string& source_dir, const Stab
   row.steps = static_cast<int>(r.steps.size());
   row.reached_mm = final_travel(r);
   row.cutbacks = r.total_cutbacks;
+  row.condition = r.max_condition_estimate;
   const Peak pk = peak_load(r);
   row.peak_N = pk.force_N;
   row.peak_travel_mm = pk.travel_mm;

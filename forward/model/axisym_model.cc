@@ -454,6 +454,7 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
   if (want_k) {
     if (out->K.blocks() != nn) out->K.resize(nn);
     out->K.set_symmetric();
+    out->K.clear_fixed();
     for (int i = 0; i < nn; ++i) {
       out->K.diag(i) = out->K_elements.diag(i);
       if (blend) out->K.diag(i) += tangent_weight * out->K_tangent_part.diag(i);

@@ -74,6 +74,9 @@ struct RunResult {
   // Solves whose Newton iteration with friction consistent with the current normal reactions did
   // not converge and that were redone with lagged reactions (see simulate.cc).
   int friction_fallbacks = 0;
+  // Largest conditioning estimate of the Newton matrices of the accepted solves (a lower bound
+  // of their 2-norm condition numbers: squared ratio of the Cholesky pivots).
+  double max_condition_estimate = 1.0;
   RunTimings timings;
   bool completed() const { return termination == Termination::kCompleted; }
 };

@@ -527,6 +527,8 @@ RunResult Driver::run() {
     result.steps.push_back(rec);
     note_squeeze(current.state);
     result.total_iterations += rec.iterations;
+    result.max_condition_estimate =
+        std::max(result.max_condition_estimate, current.summary.condition_estimate);
     if (options_.on_step) options_.on_step(rec);
     while (next_output < outputs.size() && std::abs(outputs[next_output] - T) <= 1e-9 * total) {
       result.profiles.push_back(

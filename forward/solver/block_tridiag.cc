@@ -1,8 +1,10 @@
 #include "solver/block_tridiag.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace vs {
 
@@ -12,12 +14,14 @@ void BlockTridiag::resize(int blocks) {
   pivot_.assign(blocks, Block::Zero());
   W_.assign(blocks, Block::Zero());
   symmetric_ = true;
+  fixed_.assign(3 * static_cast<std::size_t>(blocks), 0);
 }
 
 void BlockTridiag::set_zero() {
   for (auto& b : diag_) b.setZero();
   for (auto& b : lower_) b.setZero();
   symmetric_ = true;
+  std::fill(fixed_.begin(), fixed_.end(), 0);
 }
 
 void BlockTridiag::unsymmetric() {
@@ -31,6 +35,7 @@ void BlockTridiag::fix_dof(int i, int a) {
   diag_[i].row(a).setZero();
   diag_[i].col(a).setZero();
   diag_[i](a, a) = 1.0;
+  fixed_[3 * static_cast<std::size_t>(i) + a] = 1;
   if (i > 0) lower_[i - 1].row(a).setZero();         // K(i, i-1) row a
   if (i + 1 < blocks()) lower_[i].col(a).setZero();  // K(i+1, i) column a
   if (!symmetric_) {
@@ -96,6 +101,20 @@ Eigen::Vector3d upper_solve(const Block& F, const Eigen::Vector3d& y) {
 
 }  // namespace
 
+void BlockTridiag::estimate_condition() {
+  // pivot_ holds 1 / L(a, a) on its diagonal.
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (int i = 0; i < blocks(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      if (fixed_[3 * static_cast<std::size_t>(i) + a]) continue;
+      const double l = 1.0 / pivot_[i](a, a);
+      lo = std::min(lo, l);
+      hi = std::max(hi, l);
+    }
+  }
+  condition_estimate_ = hi > 0.0 ? (hi / lo) * (hi / lo) : 1.0;
+}
+
 bool BlockTridiag::factorize_unsymmetric() {
   // Block LU: U_0 = K_00, W_i = K(i, i-1) U_(i-1)^-1, U_i = K_ii - W_i K(i-1, i).
   const int n = blocks();
@@ -111,6 +130,7 @@ bool BlockTridiag::factorize_unsymmetric() {
     pivot_inverse_[i] = U.inverse();
     if (!pivot_inverse_[i].allFinite()) return false;
   }
+  estimate_condition();
   return true;
 }
 
@@ -130,6 +150,7 @@ bool BlockTridiag::factorize() {
     }
     if (!cholesky3(P, &pivot_[i])) return false;
   }
+  estimate_condition();
   return true;
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <vector>
 
 namespace vs {
@@ -32,6 +33,8 @@ class BlockTridiag {
   // stored apart, starting as the transposes of the lower ones.
   void unsymmetric();
   void set_symmetric() { symmetric_ = true; }
+  // Forgets the fix_dof() marks (a matrix whose blocks are overwritten for a new assembly).
+  void clear_fixed() { std::fill(fixed_.begin(), fixed_.end(), 0); }
   bool symmetric() const { return symmetric_; }
   // Coupling block K(i, i+1) of an unsymmetric() matrix.
   Block& upper(int i) { return upper_[i]; }
@@ -44,6 +47,11 @@ class BlockTridiag {
 
   // Factorises; false if a pivot block is not positive definite.
   bool factorize();
+  // After factorize(): (max / min)^2 of the Cholesky diagonal of the pivot blocks (of their
+  // symmetric parts if unsymmetric), over the dofs not fixed by fix_dof(). A lower bound of the
+  // 2-norm condition number of the free part of an SPD matrix (cond = |L|^2 |L^-1|^2 >=
+  // (max L_ii / min L_ii)^2), computed for free; 1 if every dof is fixed.
+  double condition_estimate() const { return condition_estimate_; }
   // Solves K x = b with the last factorisation.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // The same, overwriting b with x (no allocation).
@@ -53,6 +61,9 @@ class BlockTridiag {
   bool factorize_unsymmetric();
   std::vector<Block> diag_, lower_, upper_;
   bool symmetric_ = true;
+  std::vector<char> fixed_;  // per dof: fixed by fix_dof() (identity row and column)
+  double condition_estimate_ = 1.0;
+  void estimate_condition();
   // Cholesky factor L of every pivot block P_i = L L^T (lower triangle; the diagonal holds
   // 1 / L(a, a)).
   std::vector<Block> pivot_;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -47,6 +48,7 @@ NonlinearSummary solve_nonlinear(NonlinearProblem& problem, const NonlinearOptio
     }
     sum.residual_norm = relative(r.norm(), scale);
     bool factored = K.factorize();
+    if (factored) sum.condition_estimate = std::max(sum.condition_estimate, K.condition_estimate());
     double alpha = 1.0;
     bool accepted = false;
     if (used_theta > 0.0 && factored) {

@@ -65,6 +65,9 @@ struct NonlinearSummary {
   int picard_steps = 0;
   double update_norm = 0.0;
   double residual_norm = 0.0;
+  // Largest BlockTridiag::condition_estimate() of the matrices factorised in this solve (a
+  // lower bound of their condition numbers).
+  double condition_estimate = 1.0;
   std::string message;  // why it stopped
 };
 

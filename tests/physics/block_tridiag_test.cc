@@ -40,6 +40,36 @@ TEST(BlockTridiag, SolvesLikeADenseCholesky) {
   EXPECT_NEAR((x - dense).norm(), 0.0, 1e-12 * dense.norm());
 }
 
+TEST(BlockTridiag, ConditionEstimateIsALowerBoundAndIgnoresFixedDofs) {
+  // Diagonal SPD matrix: the estimate is exact, (max / min) of the diagonal; a fixed dof
+  // (identity row) does not enter it.
+  BlockTridiag K(2);
+  K.diag(0) = Eigen::Vector3d(1e4, 4e4, 9e4).asDiagonal();
+  K.diag(1) = Eigen::Vector3d(1e6, 2.5e5, 1e8).asDiagonal();
+  K.fix_dof(1, 2);
+  ASSERT_TRUE(K.factorize());
+  EXPECT_NEAR(K.condition_estimate(), 1e6 / 1e4, 1e-6);
+  // A random SPD chain: the estimate never exceeds the true 2-norm condition number.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 5;
+  BlockTridiag M(n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::Matrix3d A;
+    for (int a = 0; a < 9; ++a) A(a / 3, a % 3) = u(rng);
+    M.diag(i) = A * A.transpose() + (i + 1.0) * Eigen::Matrix3d::Identity();
+    if (i + 1 < n) {
+      for (int a = 0; a < 9; ++a) M.lower(i)(a / 3, a % 3) = 0.3 * u(rng);
+    }
+  }
+  Eigen::MatrixXd D(3 * n, 3 * n);
+  for (int j = 0; j < 3 * n; ++j) D.col(j) = M.multiply(Eigen::VectorXd::Unit(3 * n, j));
+  ASSERT_TRUE(M.factorize());
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(D).eigenvalues();
+  EXPECT_LE(M.condition_estimate(), ev.maxCoeff() / ev.minCoeff() * (1.0 + 1e-12));
+  EXPECT_GT(M.condition_estimate(), 1.0);
+}
+
 TEST(BlockTridiag, ReportsIndefiniteMatrices) {
   BlockTridiag K(2);
   K.diag(0) = Eigen::Matrix3d::Identity();
