@@ -255,31 +255,27 @@ void AxisymModel::update_squeezed(AxisymState* s) const {
 
 std::vector<double> AxisymModel::squeeze_forces(const AxisymState& s,
                                                 const AxisymSystem& sys) const {
-  std::vector<double> f(num_nodes(), 0.0);
-  if (sys.squeeze_pressure.empty()) return f;
-  for (int e = 0; e < num_elements(); ++e) {
-    const double p = sys.squeeze_pressure[e];
-    if (p <= 0.0) continue;
-    const Axisym2Geometry g = geometry(s, e);
-    const double force = p * 2.0 * std::numbers::pi * g.mid_radius() * g.length();
-    const bool a = s.contact[e].squeeze_tool >= 0, b = s.contact[e + 1].squeeze_tool >= 0;
-    f[e] += a ? (b ? 0.5 : 1.0) * force : 0.0;
-    f[e + 1] += b ? (a ? 0.5 : 1.0) * force : 0.0;
-  }
-  return f;
+  return nodal_pressure_forces(s, sys.squeeze_pressure,
+                               [](const NodeContact& c) { return c.squeeze_tool >= 0; });
 }
 
 std::vector<double> AxisymModel::holder_forces_from_gap(const AxisymState& s,
                                                         const AxisymSystem& sys) const {
+  return nodal_pressure_forces(s, sys.gap_pressure, [](const NodeContact& c) { return in_gap(c); });
+}
+
+std::vector<double> AxisymModel::nodal_pressure_forces(
+    const AxisymState& s, const std::vector<double>& pressure,
+    const std::function<bool(const NodeContact&)>& pressed) const {
   std::vector<double> f(num_nodes(), 0.0);
-  if (sys.gap_pressure.empty()) return f;
+  if (pressure.empty()) return f;
   for (int e = 0; e < num_elements(); ++e) {
-    const double p = sys.gap_pressure[e];
+    const double p = pressure[e];
     if (p <= 0.0) continue;
     const Axisym2Geometry g = geometry(s, e);
     const double force = p * 2.0 * std::numbers::pi * g.mid_radius() * g.length();
-    // Shared by the element's nodes in the gap (one node at the holder edge takes it all).
-    const bool a = in_gap(s.contact[e]), b = in_gap(s.contact[e + 1]);
+    // Shared by the element's pressed nodes (one pressed node at the edge takes it all).
+    const bool a = pressed(s.contact[e]), b = pressed(s.contact[e + 1]);
     f[e] += a ? (b ? 0.5 : 1.0) * force : 0.0;
     f[e + 1] += b ? (a ? 0.5 : 1.0) * force : 0.0;
   }
@@ -321,6 +317,19 @@ void AxisymModel::friction_terms(const AxisymState& s, int node, double vt_rel, 
   }
   regularised_coulomb(limit, vt_rel, friction_velocity_, force, stiff_secant, stiff_tangent,
                       potential);
+}
+
+bool AxisymModel::squeeze_friction_terms(const AxisymState& s, int node, double vt_local,
+                                         double* force, double* stiff_secant, double* stiff_tangent,
+                                         double* potential) const {
+  const NodeContact& c = s.contact[node];
+  if (c.squeeze_tool < 0 || !(c.squeeze_force_N > 0.0)) return false;
+  const RigidTool& other = tools_[c.squeeze_tool];
+  if (other.sticking()) return false;
+  const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
+  regularised_coulomb(other.friction() * c.squeeze_force_N, vt_local - other.velocity().dot(t),
+                      friction_velocity_, force, stiff_secant, stiff_tangent, potential);
+  return true;
 }
 
 void AxisymModel::evaluate(const AxisymState& s, const Eigen::VectorXd& v_local, StiffnessKind kind,
@@ -411,16 +420,8 @@ double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_loc
     p += phi;
   }
   for (int i = 0; i < num_nodes(); ++i) {
-    const NodeContact& c = s.contact[i];
-    if (c.squeeze_tool < 0 || !(c.squeeze_force_N > 0.0)) continue;
-    const RigidTool& other = tools_[c.squeeze_tool];
-    if (other.sticking()) continue;
-    const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
-    const double vt_rel = v_local(3 * i) - other.velocity().dot(t);
     double f, ks, kt, phi;
-    regularised_coulomb(other.friction() * c.squeeze_force_N, vt_rel, friction_velocity_, &f, &ks,
-                        &kt, &phi);
-    p += phi;
+    if (squeeze_friction_terms(s, i, v_local(3 * i), &f, &ks, &kt, &phi)) p += phi;
   }
   return p;
 }
@@ -529,15 +530,8 @@ void AxisymModel::assemble(const AxisymState& s, const Eigen::VectorXd& v_local,
   // frictionless: a node stuck to both could not move at all). Kept per node for the punch force.
   out->squeeze_friction.assign(nn, 0.0);
   for (int i = 0; i < nn; ++i) {
-    const NodeContact& c = s.contact[i];
-    if (c.squeeze_tool < 0 || !(c.squeeze_force_N > 0.0)) continue;
-    const RigidTool& other = tools_[c.squeeze_tool];
-    if (other.sticking()) continue;
-    const Eigen::Vector2d t(c.normal.y(), -c.normal.x());
-    const double vt_rel = v_local(3 * i) - other.velocity().dot(t);
     double f, ks, kt, phi;
-    regularised_coulomb(other.friction() * c.squeeze_force_N, vt_rel, friction_velocity_, &f, &ks,
-                        &kt, &phi);
+    if (!squeeze_friction_terms(s, i, v_local(3 * i), &f, &ks, &kt, &phi)) continue;
     r(3 * i) += f;
     out->potential += phi;
     out->squeeze_friction[i] = f;
@@ -565,7 +559,6 @@ void AxisymModel::add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v,
   // A penalty on the violation, potential k V (c - d_s - d_t)_+^2 / 2 with k = 1e3 times the
   // element's reference viscosity, gives p = k (c - d_s - d_t)_+ (MPa) and keeps the constraint
   // to ~1e-3 of the flow rate. V is the element volume.
-  constexpr double kPenalty = 1e3;
   out->gap_pressure.assign(num_elements(), 0.0);
   if (!(step_dt_ > 0.0)) return;
   for (int e = 0; e < num_elements(); ++e) {
@@ -574,30 +567,37 @@ void AxisymModel::add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v,
     // node held by friction on both faces and a node running over the die shoulder, and folds:
     // measured at gaps 1.1-1.15 mm).
     if (!in_gap(s.contact[e]) && !in_gap(s.contact[e + 1])) continue;
-    const Axisym2Geometry g = geometry(s, e);
-    const Mat56 B = axisym2_B(g);
-    const Vec6 bv = (B.row(0) + B.row(1)).transpose();
-    const double rate = bv.dot(v.segment<6>(3 * e));
     // No correction of an overshoot left by an earlier step (the penalty lets the thickness pass
     // the gap by ~1e-3 of a step's strain): demanding it back within one step makes the required
     // pressure grow without bound as cut-backs shrink dt.
-    const double c = std::min(0.0, std::log(s.thickness[e] / holder_gap_)) / step_dt_;
-    const double violation = c - rate;
-    if (violation <= 0.0) continue;
-    const double k = kPenalty * shear_viscosity_[e];
-    const double volume = 2.0 * std::numbers::pi * g.mid_radius() * g.length() * s.thickness[e];
-    const double p = k * violation;
-    out->gap_pressure[e] = p;
-    out->element_force.segment<6>(3 * e) -= p * volume * bv;
-    out->element_potential += 0.5 * k * volume * violation * violation;
-    if (want_k) {
-      // Linear in v: the same matrix in the secant and the tangent (part of K_elements).
-      const Mat6 kb = k * volume * bv * bv.transpose();
-      out->K_elements.diag(e) += kb.block<3, 3>(0, 0);
-      out->K_elements.diag(e + 1) += kb.block<3, 3>(3, 3);
-      out->K_elements.lower(e) += kb.block<3, 3>(3, 0);
-    }
+    out->gap_pressure[e] = area_rate_penalty(
+        s, v, e, std::min(0.0, std::log(s.thickness[e] / holder_gap_)), want_k, out);
   }
+}
+
+double AxisymModel::area_rate_penalty(const AxisymState& s, const Eigen::VectorXd& v, int e,
+                                      double log_ratio, bool want_k, AxisymSystem* out) const {
+  // d_s + d_t >= c = log_ratio / dt by the penalty k V (c - d_s - d_t)_+^2 / 2, k = 1e3 times the
+  // element's reference viscosity: pressure p = k (c - d_s - d_t)_+ [MPa].
+  constexpr double kPenalty = 1e3;
+  const Axisym2Geometry g = geometry(s, e);
+  const Mat56 B = axisym2_B(g);
+  const Vec6 bv = (B.row(0) + B.row(1)).transpose();
+  const double violation = log_ratio / step_dt_ - bv.dot(v.segment<6>(3 * e));
+  if (violation <= 0.0) return 0.0;
+  const double k = kPenalty * shear_viscosity_[e];
+  const double volume = 2.0 * std::numbers::pi * g.mid_radius() * g.length() * s.thickness[e];
+  const double p = k * violation;
+  out->element_force.segment<6>(3 * e) -= p * volume * bv;
+  out->element_potential += 0.5 * k * volume * violation * violation;
+  if (want_k) {
+    // Linear in v: the same matrix in the secant and the tangent (part of K_elements).
+    const Mat6 kb = k * volume * bv * bv.transpose();
+    out->K_elements.diag(e) += kb.block<3, 3>(0, 0);
+    out->K_elements.diag(e + 1) += kb.block<3, 3>(3, 3);
+    out->K_elements.lower(e) += kb.block<3, 3>(3, 0);
+  }
+  return p;
 }
 
 Eigen::Vector2d AxisymModel::node_force(const AxisymSystem& sys, int node) const {
@@ -612,7 +612,6 @@ void AxisymModel::add_squeeze(const AxisymState& s, const Eigen::VectorXd& v, bo
   // with g the smallest clearance of its squeezed nodes. Unlike the holder, an overshoot is
   // corrected (c > 0 when h > g): the clearance narrows as the sheet runs into the gap (over a
   // die shoulder), so the thickness must follow it, which is ironing.
-  constexpr double kPenalty = 1e3;
   out->squeeze_pressure.assign(num_elements(), 0.0);
   if (!(step_dt_ > 0.0)) return;
   for (int e = 0; e < num_elements(); ++e) {
@@ -623,30 +622,13 @@ void AxisymModel::add_squeeze(const AxisymState& s, const Eigen::VectorXd& v, bo
     if (a.squeeze_tool >= 0) gap = std::min(gap, a.clearance_mm);
     if (b.squeeze_tool >= 0) gap = std::min(gap, b.clearance_mm);
     if (!(gap > 0.0)) continue;
-    const Axisym2Geometry g = geometry(s, e);
-    const Mat56 B = axisym2_B(g);
-    const Vec6 bv = (B.row(0) + B.row(1)).transpose();
-    const double rate = bv.dot(v.segment<6>(3 * e));
     // At most the strain cap of a step (numerics.max_strain_increment) of thinning per step: a
     // thick rim entering the gap is ironed over a few steps instead of at an unbounded rate
     // (measured: a 0.27 mm overshoot demanded in one 0.027 mm step spiked the punch force and
     // released half the contact set).
-    const double c =
-        std::min(std::log(s.thickness[e] / gap), scene_.numerics.max_strain_increment) / step_dt_;
-    const double violation = c - rate;
-    if (violation <= 0.0) continue;
-    const double k = kPenalty * shear_viscosity_[e];
-    const double volume = 2.0 * std::numbers::pi * g.mid_radius() * g.length() * s.thickness[e];
-    const double p = k * violation;
-    out->squeeze_pressure[e] = p;
-    out->element_force.segment<6>(3 * e) -= p * volume * bv;
-    out->element_potential += 0.5 * k * volume * violation * violation;
-    if (want_k) {
-      const Mat6 kb = k * volume * bv * bv.transpose();
-      out->K_elements.diag(e) += kb.block<3, 3>(0, 0);
-      out->K_elements.diag(e + 1) += kb.block<3, 3>(3, 3);
-      out->K_elements.lower(e) += kb.block<3, 3>(3, 0);
-    }
+    out->squeeze_pressure[e] = area_rate_penalty(
+        s, v, e, std::min(std::log(s.thickness[e] / gap), scene_.numerics.max_strain_increment),
+        want_k, out);
   }
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -208,12 +209,27 @@ class AxisymModel {
   // Squeeze (ironing) penalty on elements with a squeezed node; fills out->squeeze_pressure.
   void add_squeeze(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
                    AxisymSystem* out) const;
+  // The penalty both use on element e: area rate d_s + d_t >= log_ratio / dt (the thickness at
+  // the end of the step h exp(-(d_s + d_t) dt) <= h exp(-log_ratio)); adds its force, potential
+  // and (want_k) matrix; returns the pressure [MPa], 0 if inactive.
+  double area_rate_penalty(const AxisymState& s, const Eigen::VectorXd& v_global, int e,
+                           double log_ratio, bool want_k, AxisymSystem* out) const;
+  // Nodal forces (full 360 degrees) of element pressures, each element's pressure times its
+  // mid-surface area shared by its nodes for which `pressed` holds.
+  std::vector<double> nodal_pressure_forces(
+      const AxisymState& s, const std::vector<double>& pressure,
+      const std::function<bool(const NodeContact&)>& pressed) const;
   // v <- global-frame velocities of the local-frame v, in place.
   void rotate_to_global(const AxisymState& s, Eigen::VectorXd* v) const;
   // normal_N: the normal reaction that sets the tool's Coulomb limit (the lagged one, or the
   // current one with consistent_friction()).
   void friction_terms(const AxisymState& s, int node, double vt_rel, double normal_N, double* force,
                       double* stiff_secant, double* stiff_tangent, double* potential) const;
+  // Friction of a squeezed node's second tool on the node's local tangential velocity
+  // `vt_local`; false (nothing to add) unless the node is squeezed with a force and that tool
+  // slides (a sticking second tool is taken as frictionless).
+  bool squeeze_friction_terms(const AxisymState& s, int node, double vt_local, double* force,
+                              double* stiff_secant, double* stiff_tangent, double* potential) const;
 
   Scene scene_;
   ThicknessRule rule_;
