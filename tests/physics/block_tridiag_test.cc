@@ -4,27 +4,45 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 #include <random>
 
 namespace vs {
 namespace {
 
-TEST(BlockTridiag, SolvesLikeADenseCholesky) {
-  std::mt19937 rng(42);
+// A random symmetric positive definite chain: pivot blocks A A^T + shift(i) I with A uniform in
+// [-1, 1], coupling blocks `coupling` times uniform in [-1, 1].
+BlockTridiag random_chain(int n, std::mt19937& rng, const std::function<double(int)>& shift,
+                          double coupling) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int n = 7;
   BlockTridiag K(n);
   for (int i = 0; i < n; ++i) {
     Eigen::Matrix3d A;
     for (int a = 0; a < 9; ++a) A(a / 3, a % 3) = u(rng);
-    K.diag(i) = A * A.transpose() + 8.0 * Eigen::Matrix3d::Identity();
+    K.diag(i) = A * A.transpose() + shift(i) * Eigen::Matrix3d::Identity();
     if (i + 1 < n) {
-      for (int a = 0; a < 9; ++a) K.lower(i)(a / 3, a % 3) = u(rng);
+      for (int a = 0; a < 9; ++a) K.lower(i)(a / 3, a % 3) = coupling * u(rng);
     }
   }
+  return K;
+}
+
+// The matrix as a dense one, column by column through multiply().
+Eigen::MatrixXd dense(const BlockTridiag& K) {
+  const int m = 3 * K.blocks();
+  Eigen::MatrixXd D(m, m);
+  for (int j = 0; j < m; ++j) D.col(j) = K.multiply(Eigen::VectorXd::Unit(m, j));
+  return D;
+}
+
+TEST(BlockTridiag, SolvesLikeADenseCholesky) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 7;
+  BlockTridiag K = random_chain(
+      n, rng, [](int) { return 8.0; }, 1.0);
   K.fix_dof(2, 1);
-  Eigen::MatrixXd D(3 * n, 3 * n);
-  for (int j = 0; j < 3 * n; ++j) D.col(j) = K.multiply(Eigen::VectorXd::Unit(3 * n, j));
+  const Eigen::MatrixXd D = dense(K);
   EXPECT_NEAR((D - D.transpose()).norm(), 0.0, 1e-14);
   Eigen::VectorXd b(3 * n);
   for (int i = 0; i < 3 * n; ++i) b(i) = u(rng);
@@ -51,19 +69,9 @@ TEST(BlockTridiag, ConditionEstimateIsALowerBoundAndIgnoresFixedDofs) {
   EXPECT_NEAR(K.condition_estimate(), 1e6 / 1e4, 1e-6);
   // A random SPD chain: the estimate never exceeds the true 2-norm condition number.
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const int n = 5;
-  BlockTridiag M(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::Matrix3d A;
-    for (int a = 0; a < 9; ++a) A(a / 3, a % 3) = u(rng);
-    M.diag(i) = A * A.transpose() + (i + 1.0) * Eigen::Matrix3d::Identity();
-    if (i + 1 < n) {
-      for (int a = 0; a < 9; ++a) M.lower(i)(a / 3, a % 3) = 0.3 * u(rng);
-    }
-  }
-  Eigen::MatrixXd D(3 * n, 3 * n);
-  for (int j = 0; j < 3 * n; ++j) D.col(j) = M.multiply(Eigen::VectorXd::Unit(3 * n, j));
+  BlockTridiag M = random_chain(
+      5, rng, [](int i) { return i + 1.0; }, 0.3);
+  const Eigen::MatrixXd D = dense(M);
   ASSERT_TRUE(M.factorize());
   const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(D).eigenvalues();
   EXPECT_LE(M.condition_estimate(), ev.maxCoeff() / ev.minCoeff() * (1.0 + 1e-12));
@@ -91,15 +99,8 @@ TEST(BlockTridiag, UnsymmetricSolvesLikeADenseLU) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const int n = 6;
-  BlockTridiag K(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::Matrix3d A;
-    for (int a = 0; a < 9; ++a) A(a / 3, a % 3) = u(rng);
-    K.diag(i) = A * A.transpose() + 8.0 * Eigen::Matrix3d::Identity();
-    if (i + 1 < n) {
-      for (int a = 0; a < 9; ++a) K.lower(i)(a / 3, a % 3) = u(rng);
-    }
-  }
+  BlockTridiag K = random_chain(
+      n, rng, [](int) { return 8.0; }, 1.0);
   K.unsymmetric();
   EXPECT_FALSE(K.symmetric());
   for (int i = 0; i + 1 < n; i += 2) {
@@ -108,8 +109,7 @@ TEST(BlockTridiag, UnsymmetricSolvesLikeADenseLU) {
     if (i > 0) K.lower(i - 1).row(0) += 0.3 * K.lower(i - 1).row(1);
   }
   K.fix_dof(3, 2);
-  Eigen::MatrixXd D(3 * n, 3 * n);
-  for (int j = 0; j < 3 * n; ++j) D.col(j) = K.multiply(Eigen::VectorXd::Unit(3 * n, j));
+  const Eigen::MatrixXd D = dense(K);
   EXPECT_GT((D - D.transpose()).norm(), 0.1);
   EXPECT_EQ(D.row(3 * 3 + 2).norm(), 1.0);  // fixed: identity row and column
   EXPECT_EQ(D.col(3 * 3 + 2).norm(), 1.0);
