@@ -88,9 +88,18 @@ void AxisymModel::place_tools(const AxisymState& s) {
   for (std::size_t t = 0; t < tools_.size(); ++t) tools_[t].set_offset(s.tool_offset[t]);
 }
 
-void AxisymModel::freeze_material(const AxisymState& s, double dt_predicted) {
-  // Midpoint rule for the hardening seen by the velocity solve.
-  constexpr double kTheta = 0.5;
+void AxisymModel::freeze_material(const std::vector<double>& eps_bar, double dt_predicted) {
+  // Backward Euler in the hardening: the solve sees sigma_y(eps_bar + dt eps_dot), linearised.
+  // Rate-independent flow makes the hardening an algebraic constraint (two elements carrying the
+  // same load flow in whatever proportion keeps their flow stresses equal), i.e. an infinitely
+  // stiff mode. For a yield-stress difference d between two such elements the solve gives a
+  // rate difference -d / (theta H dt) and the step changes d by H dt times that: d -> (1 - 1/theta) d.
+  // The midpoint weight theta = 1/2 (used before Nov 2026) flips the sign of d every step without
+  // damping it: the strain rates alternated step to step by up to 30 % and the load curve and
+  // strains jittered above 0.05 element lengths per step (experiments/06_step_stability);
+  // theta = 1 removes the difference in one step (with the Heun predictor hardening from the
+  // start of the step too, Driver::take_step).
+  constexpr double kTheta = 1.0;
   step_dt_ = dt_predicted;
   const std::size_t np = rule_.zeta.size();
   sigma_y_.assign(num_elements(), std::vector<double>(np));
@@ -98,8 +107,8 @@ void AxisymModel::freeze_material(const AxisymState& s, double dt_predicted) {
   shear_viscosity_.assign(num_elements(), 0.0);
   for (int e = 0; e < num_elements(); ++e) {
     for (std::size_t k = 0; k < np; ++k) {
-      sigma_y_[e][k] = hardening_.flow_stress(s.eps_bar[e * np + k]);
-      hardening_viscosity_[e][k] = kTheta * hardening_.slope(s.eps_bar[e * np + k]) * dt_predicted;
+      sigma_y_[e][k] = hardening_.flow_stress(eps_bar[e * np + k]);
+      hardening_viscosity_[e][k] = kTheta * hardening_.slope(eps_bar[e * np + k]) * dt_predicted;
     }
     // Transverse shear penalty: the viscosity of the section's mid point at the nominal rate
     // (numerics.md section 3.4: keep transverse shear out of the flow rule).

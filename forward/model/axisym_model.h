@@ -119,9 +119,15 @@ class AxisymModel {
   // Places the tools at the state's offsets (tools are shared, positions come from the state).
   void place_tools(const AxisymState& s);
 
-  // Per-step material data: yield stress and hardening viscosity theta H dt per point (dt: the
-  // predicted step size), shear penalty per element.
-  void freeze_material(const AxisymState& s, double dt_predicted);
+  // Per-step material data: yield stress sigma_y(eps_bar) and hardening viscosity H(eps_bar) dt
+  // per point, shear penalty per element. The solve then sees the flow stress at the end of the
+  // step it is used for, sigma_y(eps_bar) + H dt eps_dot (backward Euler in the hardening; dt: the
+  // predicted step size). eps_bar: per element and thickness point, as AxisymState::eps_bar
+  // (the state's own, or the start-of-step values for the Heun predictor's solve).
+  void freeze_material(const std::vector<double>& eps_bar, double dt_predicted);
+  void freeze_material(const AxisymState& s, double dt_predicted) {
+    freeze_material(s.eps_bar, dt_predicted);
+  }
 
   // Node frames: global = Q * local for the node's 3 unknowns.
   Eigen::Matrix3d frame(const AxisymState& s, int node) const;

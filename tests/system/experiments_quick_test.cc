@@ -131,9 +131,10 @@ TEST(ExperimentsQuick, ScaledGeometryGivesScaledAnswers) {
 }
 
 // 06_step_stability in small: a punch-friction sweep of 2e-4 moves the outputs smoothly at the
-// default travel step and visibly not at a step four times larger (the stability limit of the
-// explicit geometry update). Measured (24 elements, F at 14 mm): jitter 0.037 % / 0.38 %, load
-// roughness 0.042 / 0.19.
+// default travel step and visibly less so at a step four times larger (the stability limit of
+// the explicit geometry update). Measured (24 elements, F at 14 mm): jitter 1.9e-8 / 2.3e-4 of
+// the force, load roughness 0.050 / 0.066; with the midpoint hardening used before Nov 2026 it
+// was 3.7e-4 / 3.8e-3 and 0.042 / 0.19 (the backward-Euler hardening removed most of it).
 TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
   auto sweep = [](const char* per_length, double* jitter, double* rough) {
     std::vector<double> mu, f;
@@ -161,10 +162,10 @@ TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
   fmt::print("step 0.025 l: jitter {:.2e}, roughness {:.3f}; step 0.1 l: jitter {:.2e}, roughness "
              "{:.3f}\n",
              jitter_default, rough_default, jitter_large, rough_large);
-  EXPECT_LT(jitter_default, 1e-3);
+  EXPECT_LT(jitter_default, 1e-5);
   EXPECT_LT(rough_default, 0.1);
-  EXPECT_GT(jitter_large, 3.0 * jitter_default);
-  EXPECT_GT(rough_large, 3.0 * rough_default);
+  EXPECT_LT(rough_large, 0.1);
+  EXPECT_GT(jitter_large, 100.0 * jitter_default);
 }
 
 #ifdef VS_HAVE_SHELL3D

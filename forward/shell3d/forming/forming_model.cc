@@ -99,7 +99,12 @@ void FormingModel::place_tools(const FormingState& s) {
 }
 
 void FormingModel::freeze_material(const FormingState& s, double dt_predicted) {
-  constexpr double kTheta = 0.5;  // midpoint hardening, as the axisymmetric model
+  // Midpoint hardening. The axisymmetric model moved to backward Euler (theta 1, which damps the
+  // stiff hardening mode; AxisymModel::freeze_material) in Nov 2026; here that moved the 3D
+  // comparisons on the tests' coarse 0.5 mm travel grid away from the axisymmetric twin (sticking,
+  // mean force: 2.2 -> 3.0 % at 6 mm, 3.3 -> 5.1 % at 8 mm; theta H dt is a first-order error at
+  // large steps), so 3D keeps 1/2 until it is measured at the per-length cap.
+  constexpr double kTheta = 0.5;
   const int ne = num_elements(), fp = flow_points_, nt = thickness_points();
   sigma_y_.resize(static_cast<std::size_t>(ne * fp));
   hardening_viscosity_.resize(sigma_y_.size());
