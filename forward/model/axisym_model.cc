@@ -93,12 +93,12 @@ void AxisymModel::freeze_material(const std::vector<double>& eps_bar, double dt_
   // Rate-independent flow makes the hardening an algebraic constraint (two elements carrying the
   // same load flow in whatever proportion keeps their flow stresses equal), i.e. an infinitely
   // stiff mode. For a yield-stress difference d between two such elements the solve gives a
-  // rate difference -d / (theta H dt) and the step changes d by H dt times that: d -> (1 - 1/theta) d.
-  // The midpoint weight theta = 1/2 (used before Nov 2026) flips the sign of d every step without
-  // damping it: the strain rates alternated step to step by up to 30 % and the load curve and
-  // strains jittered above 0.05 element lengths per step (experiments/06_step_stability);
-  // theta = 1 removes the difference in one step (with the Heun predictor hardening from the
-  // start of the step too, Driver::take_step).
+  // rate difference -d / (theta H dt) and the step changes d by H dt times that: d -> (1 - 1/theta)
+  // d. The midpoint weight theta = 1/2 (used before Nov 2026) flips the sign of d every step
+  // without damping it: the strain rates alternated step to step by up to 30 % and the load curve
+  // and strains jittered above 0.05 element lengths per step (experiments/06_step_stability); theta
+  // = 1 removes the difference in one step (with the Heun predictor hardening from the start of the
+  // step too, Driver::take_step).
   constexpr double kTheta = 1.0;
   step_dt_ = dt_predicted;
   const std::size_t np = rule_.zeta.size();
