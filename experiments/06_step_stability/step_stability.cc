@@ -11,6 +11,8 @@
 //
 //   build/experiments/step_stability [--quick] [--out DIR]
 // (default DIR: experiments/06_step_stability/results/ of the source tree)
+#include "common/step_stability.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,9 +26,6 @@
 
 #include "common/harness.h"
 #include "common/table.h"
-#include "common/step_stability.h"
-
-
 
 int main(int argc, char** argv) {
   const std::string src = VS_SOURCE_DIR;
@@ -40,8 +39,9 @@ int main(int argc, char** argv) {
       quick ? std::vector<double>{0.1, 0.025} : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
   const int sweep = quick ? 5 : 11;
   std::string md =
-      "| elements | step / element length | travel step (mm) | jitter F(10 mm) | jitter F(16 mm) "
-      "| jitter F(20 mm) | jitter eps_t,min(20 mm) | load roughness | CPU s per run |\n"
+      "| elements | step / element length | travel step (mm) | jitter F(10 mm) / F | jitter F(16 "
+      "mm) / F "
+      "| jitter F(20 mm) / F | jitter eps_t,min(20 mm) | load roughness | CPU s per run |\n"
       "|---|---|---|---|---|---|---|---|---|\n";
   std::ofstream csv(out_dir + "/step_stability.csv");
   csv << "elements,step_per_length,travel_step_mm,jitter_F10_rel,jitter_F16_rel,jitter_F20_rel,"
@@ -52,17 +52,16 @@ int main(int argc, char** argv) {
       double rough = 0.0, cpu = 0.0, step_mm = 0.0;
       for (int k = 0; k < sweep; ++k) {
         const double m = 0.099 + 0.002 * k / (sweep - 1);
-        const vs::Scene scene = vsx::make_scene(
-            vsx::scene_path(src, "ex1_hemispherical_stretching"),
-            {{"blank.elements", std::to_string(el)},
-             {"process.punch_travel_mm", "20"},
-             {"process.output_travels_mm", "[10.0, 20.0]"},
-             {"material.r_value", "1.5"},
-             {"numerics.tolerance", "1e-8"},
-             {"numerics.max_travel_increment_per_length", fmt::format("{}", f)},
-             {"tool.punch.friction", fmt::format("{:.6f}", m)}});
-        step_mm = std::min(scene.numerics.max_travel_increment_mm,
-                           f * scene.blank.radius_mm / el);
+        const vs::Scene scene =
+            vsx::make_scene(vsx::scene_path(src, "ex1_hemispherical_stretching"),
+                            {{"blank.elements", std::to_string(el)},
+                             {"process.punch_travel_mm", "20"},
+                             {"process.output_travels_mm", "[10.0, 20.0]"},
+                             {"material.r_value", "1.5"},
+                             {"numerics.tolerance", "1e-8"},
+                             {"numerics.max_travel_increment_per_length", fmt::format("{}", f)},
+                             {"tool.punch.friction", fmt::format("{:.6f}", m)}});
+        step_mm = std::min(scene.numerics.max_travel_increment_mm, f * scene.blank.radius_mm / el);
         const vsx::TimedRun run = vsx::run_once(scene, 600.0);
         if (!run.result.completed()) {
           fmt::print(stderr, "{} el, factor {}: run failed: {}\n", el, f, run.result.message);
@@ -83,13 +82,16 @@ int main(int argc, char** argv) {
       const double j20 = vsx::linear_fit_max_deviation(mu, f20) / f20.front();
       const double je = vsx::linear_fit_max_deviation(mu, emin);
       const double c = cpu / static_cast<double>(mu.size());
-      md += fmt::format("| {} | {} | {:.4f} | {:.3f}% | {:.3f}% | {:.3f}% | {:.1e} | {:.3f} | {:.2f} |\n",
-                        el, f, step_mm, 100 * j10, 100 * j16, 100 * j20, je, rough, c);
+      // Relative force jitter in scientific notation: at the default step it is ~1e-8.
+      md += fmt::format(
+          "| {} | {} | {:.4f} | {:.1e} | {:.1e} | {:.1e} | {:.1e} | {:.3f} | {:.2f} |\n", el, f,
+          step_mm, j10, j16, j20, je, rough, c);
       csv << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", el, f, step_mm,
                          j10, j16, j20, je, rough, c);
-      fmt::print("{} elements, step/length {}: jitter F10 {:.3f}% F16 {:.3f}% F20 {:.3f}% "
-                 "eps {:.1e}, roughness {:.3f}, {:.2f} s/run\n",
-                 el, f, 100 * j10, 100 * j16, 100 * j20, je, rough, c);
+      fmt::print(
+          "{} elements, step/length {}: jitter F10 {:.1e} F16 {:.1e} F20 {:.1e} (relative) "
+          "eps {:.1e}, roughness {:.3f}, {:.2f} s/run\n",
+          el, f, j10, j16, j20, je, rough, c);
     }
   }
   std::ofstream(out_dir + "/summary.md") << md;
