@@ -634,10 +634,15 @@ void AxisymModel::add_squeeze(const AxisymState& s, const Eigen::VectorXd& v, bo
     // At most the strain cap of a step (numerics.max_strain_increment) of thinning per step: a
     // thick rim entering the gap is ironed over a few steps instead of at an unbounded rate
     // (measured: a 0.27 mm overshoot demanded in one 0.027 mm step spiked the punch force and
-    // released half the contact set).
-    out->squeeze_pressure[e] = area_rate_penalty(
-        s, v, e, std::min(std::log(s.thickness[e] / gap), scene_.numerics.max_strain_increment),
-        want_k, out);
+    // released half the contact set). And over no less than a regular step's time: a node that
+    // becomes squeezed at a contact event, in a step 1 / 10 of the grid's, had its 0.9 % overshoot
+    // demanded at ~100x the flow rate; the penalty pressure then carried the punch load, pulled
+    // the sheet off the punch nose and released seven nodes at once (measured: ESAFORM cup, gap
+    // 1.04 mm, Swift UA, friction 0.05, stopped at 37.02 mm).
+    const double log_ratio =
+        std::min(std::log(s.thickness[e] / gap), scene_.numerics.max_strain_increment);
+    const double slow_down = step_dt_ / std::max(step_dt_, squeeze_correction_s_);
+    out->squeeze_pressure[e] = area_rate_penalty(s, v, e, log_ratio * slow_down, want_k, out);
   }
 }
 

@@ -158,6 +158,10 @@ class AxisymModel {
     return consistent_friction_ && !sandwiched(c);
   }
   void set_consistent_friction(bool on) { consistent_friction_ = on; }
+  // Shortest time over which a squeezed element's thickness overshoot over the clearance is
+  // ironed out (add_squeeze): the driver's regular step (its travel grid), so that a short
+  // contact-event step does not demand the correction at a rate growing as 1 / dt.
+  void set_squeeze_correction_time(double seconds) { squeeze_correction_s_ = seconds; }
   bool consistent_friction() const { return consistent_friction_; }
   void update_sandwiched(AxisymState* s) const;
   // Marks the contact nodes whose other surface reaches a second tool (not a fixed-gap holder,
@@ -252,6 +256,7 @@ class AxisymModel {
   double holder_force_ = 0.0, holder_friction_ = 0.0;
   double holder_gap_ = 0.0;  // fixed-gap holder: gap to the die face [mm]; 0 = force holder
   double step_dt_ = 0.0;     // step size the frozen material data were made for [s]
+  double squeeze_correction_s_ = 0.0;  // shortest time over which an ironing overshoot is removed
   bool has_holder_ = false;
   // Frozen per step.
   std::vector<std::vector<double>> sigma_y_;              // per element, per point

@@ -71,6 +71,7 @@ class Driver {
                                   scene.numerics.max_travel_increment_per_length * shortest);
     targets_ = travel_grid(scene.process.punch_travel_mm, grid_increment_mm_,
                            scene.process.output_travels_mm);
+    model_.set_squeeze_correction_time(grid_increment_mm_ / scene.process.punch_speed_mm_per_s);
   }
 
   RunResult run();
