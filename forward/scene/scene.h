@@ -23,6 +23,7 @@ enum class BlankShape {
 // Part of the blank a 3D model meshes (geometry = shell3d).
 enum class BlankSymmetry {
   kQuarter,  // x >= 0, y >= 0 with symmetry planes x = 0 and y = 0; forces reported x 4
+  kFull,     // the whole blank, no symmetry planes
 };
 
 // Boundary condition at the outer rim of the blank.

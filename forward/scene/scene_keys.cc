@@ -135,14 +135,16 @@ std::vector<KeySpec> build_keys() {
              "Blank outline (shell3d only): circle of radius radius_mm, or square of half side "
              "radius_mm centred on the punch axis."))
       .geometry = "shell3d";
-  add(choice("blank", "symmetry", enum_field<&blank, &BlankSpec::symmetry>(), {"quarter"},
+  add(choice("blank", "symmetry", enum_field<&blank, &BlankSpec::symmetry>(), {"quarter", "full"},
              "Part meshed (shell3d only): quarter = x, y >= 0 with symmetry planes x = 0 and "
-             "y = 0; forces are reported for the whole blank."))
+             "y = 0 (forces reported for the whole blank); full = the whole blank, no symmetry "
+             "planes (4x the elements)."))
       .geometry = "shell3d";
   add(make("blank", "divisions", kInt, int_field<&blank, &BlankSpec::divisions>(), "",
            closed(1, 64),
-           "9-node elements along each edge of each mesh block (shell3d only): the quarter "
-           "circle has 3 n x n blocks (3 n^2 elements), the quarter square one (n^2)."))
+           "9-node elements along each quarter-model block edge (shell3d only): the quarter "
+           "circle has 3 n x n blocks (3 n^2 elements), the quarter square one (n^2); a full "
+           "blank is the quarter mesh mirrored onto all four quadrants (4x the elements)."))
       .geometry = "shell3d";
 
   // [material]

@@ -145,6 +145,85 @@ ShellMesh quarter_disc(double r, int n, int m, double thickness) {
   return disc;
 }
 
+namespace {
+
+// Rotation of a point about z by k quarter turns, exact in floating point (no cos(pi/2) round-off),
+// so that rotated copies of a block share bit-identical nodes with their neighbours where the
+// geometry does.
+Eigen::Vector3d quarter_turns(const Eigen::Vector3d& x, int k) {
+  switch (((k % 4) + 4) % 4) {
+    case 1:
+      return {-x.y(), x.x(), x.z()};
+    case 2:
+      return {-x.x(), -x.y(), x.z()};
+    case 3:
+      return {x.y(), -x.x(), x.z()};
+    default:
+      return x;
+  }
+}
+
+// The node sets every full blank carries: the lines through the centre used by the output
+// profiles, and the centre itself (the outline set "edge" is added by the generator).
+void add_full_blank_sets(ShellMesh* mesh, double size) {
+  const double tol = 1e-9 * size;
+  add_node_set(mesh, "x0", [tol](const Eigen::Vector3d& x) { return std::abs(x.x()) < tol; });
+  add_node_set(mesh, "y0", [tol](const Eigen::Vector3d& x) { return std::abs(x.y()) < tol; });
+  add_node_set(mesh, "diagonal",
+               [tol](const Eigen::Vector3d& x) { return std::abs(x.x() - x.y()) < tol; });
+  add_node_set(mesh, "centre", [tol](const Eigen::Vector3d& x) { return x.norm() < tol; });
+}
+
+}  // namespace
+
+ShellMesh full_disc(double r, int n, int m, double thickness) {
+  const double s = 0.5 * r, q = 0.25 * std::numbers::pi;
+  const auto up = [](double, double) { return Eigen::Vector3d::UnitZ(); };
+  std::vector<ShellMesh> parts;
+  parts.push_back(structured_block(
+      n, n,
+      [=](double u, double v) {
+        return Eigen::Vector3d((2.0 * u - 1.0) * s, (2.0 * v - 1.0) * s, 0.0);
+      },
+      up, thickness));
+  // Block k spans the arc from (2k - 1) to (2k + 1) times 45 degrees: the block at -45..45
+  // degrees (u radial from the square's edge x = s, v counter-clockwise, so g_u x g_v = +z)
+  // turned by k quarter turns, which keeps the orientation.
+  for (int k = 0; k < 4; ++k) {
+    parts.push_back(structured_block(
+        m, n,
+        [=](double u, double v) {
+          const double t = q * (2.0 * v - 1.0);
+          const Eigen::Vector3d a(s, (2.0 * v - 1.0) * s, 0.0),
+              b(r * std::cos(t), r * std::sin(t), 0.0);
+          return quarter_turns((1.0 - u) * a + u * b, k);
+        },
+        up, thickness));
+  }
+  for (auto& p : parts) p.node_sets.clear();
+  ShellMesh disc = merge_meshes(parts, 1e-9 * r);
+  add_node_set(&disc, "edge",
+               [=](const Eigen::Vector3d& x) { return std::abs(x.norm() - r) < 1e-9 * r; });
+  add_full_blank_sets(&disc, r);
+  return disc;
+}
+
+ShellMesh full_square(double a, int n, double thickness) {
+  ShellMesh m = structured_block(
+      n, n,
+      [=](double u, double v) {
+        return Eigen::Vector3d((2.0 * u - 1.0) * a, (2.0 * v - 1.0) * a, 0.0);
+      },
+      [](double, double) { return Eigen::Vector3d::UnitZ(); }, thickness);
+  m.node_sets.clear();
+  const double tol = 1e-9 * a;
+  add_node_set(&m, "edge", [=](const Eigen::Vector3d& x) {
+    return std::abs(std::abs(x.x()) - a) < tol || std::abs(std::abs(x.y()) - a) < tol;
+  });
+  add_full_blank_sets(&m, a);
+  return m;
+}
+
 ShellMesh merge_meshes(const std::vector<ShellMesh>& parts, double tol) {
   ShellMesh out;
   bool normals = true;

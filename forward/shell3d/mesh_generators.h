@@ -40,6 +40,17 @@ ShellMesh twisted_strip(double l, double w, double twist, int n_width, int n_len
 // "y0" (on y = 0), "rim", "centre".
 ShellMesh quarter_disc(double r, int n, int m, double thickness);
 
+// Full circular blank of radius r in z = 0 centred on the origin, normal +z (O-grid): an n x n
+// central square (corners (+-r/2, +-r/2)) and four curved n x m blocks out to the rim (m
+// elements radially). With n = 2k, m = k it is quarter_disc(r, k, k) mirrored onto all four
+// quadrants. Sets "edge" (the rim), "centre" (the node at the origin; it exists for any n),
+// "x0" (the whole line x = 0), "y0" (the whole line y = 0), "diagonal" (the whole line x = y).
+ShellMesh full_disc(double r, int n, int m, double thickness);
+
+// Full square blank [-a, a] x [-a, a] in z = 0, normal +z, n x n elements. Sets as full_disc:
+// "edge" (the four sides), "centre", "x0", "y0", "diagonal" (whole lines through the centre).
+ShellMesh full_square(double a, int n, double thickness);
+
 // Merges nodes closer than tol (first occurrence wins); node sets are concatenated and
 // deduplicated, exact normals kept if every input has them.
 ShellMesh merge_meshes(const std::vector<ShellMesh>& parts, double tol);

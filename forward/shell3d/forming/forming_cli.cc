@@ -41,8 +41,9 @@ bool run_shell3d_scene(const Scene& scene, const Shell3dCliOptions& options, std
   summary_input.timings.total_s = result.timings.total_s;
   const Shell3dTimings& t = result.timings;
   out << summary_report(summarize_run(summary_input)) << '\n'
-      << fmt::format("model             3D shell, {} elements, {} dofs (quarter blank)\n",
-                     result.mesh.num_elements(), result.dofs)
+      << fmt::format("model             3D shell, {} elements, {} dofs ({} blank)\n",
+                     result.mesh.num_elements(), result.dofs,
+                     scene.blank.symmetry == BlankSymmetry::kFull ? "full" : "quarter")
       << fmt::format(
              "time split        assembly {:.2f} s, factorisation {:.2f} s ({}), contact "
              "{:.2f} s of {:.2f} s\n",

@@ -1,6 +1,6 @@
 // Fields derived from a ShellStage for outputs and tests: in-plane principal (major, minor) true
-// strains of every element from the mid-surface metric, and nodal profiles along the symmetry
-// lines and the diagonal of the quarter blank.
+// strains of every element from the mid-surface metric, and nodal profiles from the centre along
+// the lines y = 0, x = 0 and the diagonal x = y (node sets of forming_mesh.h).
 //
 // Principal strains: at the element centre (r = s = 0) the covariant metrics of the initial and
 // current mid-surface, G0 = [g_r0 g_s0]^T [g_r0 g_s0] and G = [g_r g_s]^T [g_r g_s], define the
@@ -25,7 +25,7 @@ struct ElementStrains {
 ElementStrains element_strains(const ShellMesh& mesh, const ShellStage& stage);
 
 struct LineProfile {
-  std::string line;           // node set name: "y0" (along x), "x0" (along y), "diagonal"
+  std::string line;           // node set: "y0" (along x), "x0" (along y), "diagonal", "..._neg"
   std::vector<int> nodes;     // sorted by initial radius
   std::vector<double> r0_mm;  // initial distance from the punch axis
   std::vector<double> r_mm;   // current distance from the axis

@@ -62,15 +62,18 @@ FormingModel::FormingModel(const Scene& scene)
   axis_.assign(nn, 0);
   sym_.assign(nn, 0);
   eligible_.assign(nn, 1);
+  const bool quarter = scene.blank.symmetry == BlankSymmetry::kQuarter;
   const auto& x0 = mesh_.set("x0");
   const auto& y0 = mesh_.set("y0");
   const auto& edge = mesh_.set("edge");
   for (int i = 0; i < nn; ++i) {
     const Vec3& p = mesh_.nodes[i];
     axis_[i] = std::hypot(p.x(), p.y()) < tol ? 1 : 0;
-    sym_[i] = (contains(x0, i) || contains(y0, i)) ? 1 : 0;
+    // Full blanks carry "x0" / "y0" as profile lines only: no symmetry planes.
+    sym_[i] = quarter && (contains(x0, i) || contains(y0, i)) ? 1 : 0;
     if (scene.blank.edge != EdgeCondition::kFree && contains(edge, i)) eligible_[i] = 0;
   }
+  if (!quarter && scene.blank.edge == EdgeCondition::kFree) spin_node_ = spin_reference(y0);
   std::vector<std::set<int>> nb(nn);
   for (const auto& el : mesh_.elements) {
     for (int a : el)
@@ -79,6 +82,20 @@ FormingModel::FormingModel(const Scene& scene)
   }
   neighbours_.resize(nn);
   for (int i = 0; i < nn; ++i) neighbours_[i].assign(nb[i].begin(), nb[i].end());
+}
+
+int FormingModel::spin_reference(const std::vector<int>& line) const {
+  int far = -1;
+  double r_far = 0.0;
+  for (int i : line) {
+    const double r = std::hypot(mesh_.nodes[i].x(), mesh_.nodes[i].y());
+    if (r > r_far) {
+      far = i;
+      r_far = r;
+    }
+  }
+  if (far < 0) throw InputError(scene_.source + ": blank.symmetry: the mesh has no line y = 0");
+  return far;
 }
 
 FormingState FormingModel::initial_state() const {
@@ -151,10 +168,7 @@ void FormingModel::prepare(const FormingState& s) {
   mask_.assign(num_dofs(), 0);
   value_.assign(num_dofs(), 0.0);
   dual_count_ = 0;  // a new solve: its first tangent is the secant matrix
-  auto fix = [&](int node, int k, double v) {
-    mask_[model_->dof(node, k)] = 1;
-    value_[model_->dof(node, k)] = v;
-  };
+  auto fix = [&](int node, int k, double v) { prescribe(node, k, v); };
   for (int i = 0; i < nn; ++i) {
     const Vec3& x = s.x[i];
     Mat3 Q = Mat3::Identity();
@@ -173,12 +187,7 @@ void FormingModel::prepare(const FormingState& s) {
     const Vec3& d = s.director[i];
     v1_[i] = (hint - hint.dot(d) * d).normalized();
     v2_[i] = d.cross(v1_[i]);
-    if (axis_[i]) {
-      for (int k : {0, 1, 3, 4}) fix(i, k, 0.0);
-    } else if (sym_[i]) {
-      fix(i, 0, 0.0);
-      fix(i, 4, 0.0);
-    }
+    fix_rigid_modes(i);
     const NodeContact3& c = s.contact[i];
     if (c.tool >= 0) {
       const RigidTool& tool = tools_[c.tool];
@@ -193,6 +202,39 @@ void FormingModel::prepare(const FormingState& s) {
       const int last = scene_.blank.edge == EdgeCondition::kClamped ? 5 : 3;
       for (int k = 0; k < last; ++k) fix(i, k, 0.0);
     }
+  }
+}
+
+void FormingModel::prescribe(int node, int k, double v) {
+  mask_[model_->dof(node, k)] = 1;
+  value_[model_->dof(node, k)] = v;
+}
+
+void FormingModel::fix_rigid_modes(int i) {
+  if (symmetry_factor() > 1.0) {
+    // Quarter model: the axis node lies on both symmetry planes (no in-plane motion, director
+    // stays vertical); a node on one plane has no normal velocity and no rate about V2 (V1 =
+    // e_theta is the plane normal).
+    if (axis_[i]) {
+      for (int k : {0, 1, 3, 4}) prescribe(i, k, 0.0);
+    } else if (sym_[i]) {
+      prescribe(i, 0, 0.0);
+      prescribe(i, 4, 0.0);
+    }
+    return;
+  }
+  // Full blank: a pinned or clamped edge holds the sheet in its plane, nothing else is needed.
+  // A free edge leaves the in-plane translation and the rotation about z undetermined (contact
+  // and friction only restrain them where the sheet touches a tool): the centre node keeps zero
+  // in-plane velocity and the outermost node on y = 0 zero circumferential velocity (a1 = e_theta),
+  // both exact for the axisymmetric tools and the mirror-symmetric blank outlines. The axis
+  // node's rotation rates stay free (the director rotation is not a rigid mode).
+  if (scene_.blank.edge != EdgeCondition::kFree) return;
+  if (axis_[i]) {
+    prescribe(i, 0, 0.0);
+    prescribe(i, 1, 0.0);
+  } else if (i == spin_node_) {
+    prescribe(i, 0, 0.0);
   }
 }
 

@@ -1,4 +1,4 @@
-// The 3D viscous-shell forming model (paper section 6): a quarter blank of 9-node shells in
+// The 3D viscous-shell forming model (paper section 6): a quarter or full blank of 9-node shells in
 // updated coordinates, the analytic axisymmetric tools of forward/contact, the shared viscous
 // material, and the evaluation of residual, stiffness and flow potential for a velocity field
 // with every node's translational unknowns in its own nodal frame (paper section 6.7).
@@ -8,8 +8,8 @@
 // frame is cylindrical, because every tool is axisymmetric about z:
 //   a1 = e_theta (circumferential), a3 = tool normal n (e_z for a free node), a2 = a3 x ... the
 //   meridional tangent n_z e_r - n_r e_z (e_r for a free node);
-// at a node on the axis Q = I (its in-plane velocities are fixed by symmetry and its contact
-// normal is e_z). Then
+// at a node on the axis Q = I (e_theta is undefined there; its contact normal is e_z; in the
+// quarter model its in-plane velocities are fixed by symmetry). Then
 //   - a symmetry plane x = 0 or y = 0 (normal e_theta there) is "u_local 0 = 0" and, with the
 //     director frame V1 = e_theta projected on the tangent plane, "rate about V2 = 0";
 //   - contact with a tool of velocity w is "u_local 2 = w . n" (one dof; the 3x3 block rotation
@@ -41,7 +41,7 @@ namespace vs::shell3d {
 struct NodeContact3 {
   int tool = -1;                // index into tools, -1 = free
   Vec3 normal = Vec3::UnitZ();  // from the tool into the sheet
-  double normal_force_N = 0.0;  // lagged normal reaction of this node (quarter model)
+  double normal_force_N = 0.0;  // lagged normal reaction of this node (meshed part)
 };
 
 // Everything that changes from step to step.
@@ -81,8 +81,11 @@ class FormingModel {
   const std::vector<RigidTool>& tools() const { return tools_; }
   int punch_index() const { return punch_; }
   double nominal_rate() const { return nominal_rate_; }
-  // 4 for the quarter model: nodal reactions and forces are scaled by it for the whole blank.
-  double symmetry_factor() const { return 4.0; }
+  // 4 for the quarter model, 1 for the full blank: nodal reactions and forces are scaled by it
+  // for the whole blank.
+  double symmetry_factor() const {
+    return scene_.blank.symmetry == BlankSymmetry::kQuarter ? 4.0 : 1.0;
+  }
   const Vec3& initial_position(int node) const { return mesh_.nodes[node]; }
   double initial_thickness() const { return scene_.blank.thickness_mm; }
   bool on_axis(int node) const { return axis_[node] != 0; }
@@ -155,6 +158,15 @@ class FormingModel {
                       double theta, ElementContribution* c);
   void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
                 Shell9Stiffness kind, FormingSystem* out);
+  // Prescribed value v of local dof k of a node (prepare()).
+  void prescribe(int node, int k, double v);
+  // Prescribes the dofs of node i that remove the rigid-body modes: the symmetry planes of the
+  // quarter model, or for a full blank with a free edge the in-plane translation and rotation
+  // about z.
+  void fix_rigid_modes(int i);
+  // The node whose circumferential velocity fixes the rotation about z of a free full blank: the
+  // outermost node of `line` (on y = 0, where that velocity vanishes by mirror symmetry).
+  int spin_reference(const std::vector<int>& line) const;
 
   Scene scene_;
   ShellMesh mesh_;
@@ -171,6 +183,7 @@ class FormingModel {
   double nominal_rate_ = 1.0;
   double friction_velocity_ = 1e-4;
   std::vector<char> axis_, sym_, eligible_;
+  int spin_node_ = -1;  // full blank, free edge: see fix_rigid_modes()
   std::vector<std::vector<int>> neighbours_;
   // Frozen per step.
   std::vector<double> sigma_y_, hardening_viscosity_;  // per element * flow point

@@ -31,7 +31,7 @@ struct Shell3dTimings {
 };
 
 struct Shell3dResult {
-  ShellMesh mesh;  // initial mesh (quarter blank)
+  ShellMesh mesh;  // initial mesh (the meshed part: quarter or full blank)
   std::vector<std::string> tool_names;
   std::vector<StepRecord> steps;
   std::vector<ShellStage> stages;  // at process.output_travels_mm reached, then the last state

@@ -30,7 +30,7 @@ class FormingStepProblem : public SparseNonlinearProblem {
 
   // Whole-blank punch force (+z on the sheet) [N] at the last finish().
   double punch_force() const { return punch_force_; }
-  // Normal reaction of every node (compressive > 0, quarter model) at the last finish().
+  // Normal reaction of every node (compressive > 0, meshed part) at the last finish().
   const std::vector<double>& normal_reactions() const { return normal_; }
   // |reaction vector| of every contact node (0 elsewhere) at the last finish().
   const std::vector<double>& reaction_magnitudes() const { return magnitude_; }

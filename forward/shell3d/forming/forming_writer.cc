@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "output/number_format.h"
 #include "output/step_csv.h"
@@ -16,7 +18,34 @@ namespace vs::shell3d {
 
 namespace {
 
-const char* const kLines[] = {"y0", "x0", "diagonal"};
+// Profile lines from the centre (node sets of forming_mesh.h): the halves x, y >= 0 always, the
+// other halves when the mesh is a full blank.
+std::vector<std::string> profile_lines(const ShellMesh& mesh) {
+  std::vector<std::string> lines;
+  for (const char* line : {"y0", "x0", "diagonal"}) {
+    lines.emplace_back(line);
+    const std::string other = std::string(line) + "_neg";
+    if (mesh.node_sets.count(other) != 0) lines.push_back(other);
+  }
+  return lines;
+}
+
+// Thickness strain along y = 0 against the initial x: the half x >= 0 of a quarter blank, the
+// whole line through the centre of a full blank (the half x <= 0 at negative x).
+PlotSeries y0_series(const ShellMesh& mesh, const ShellStage& st, double h0) {
+  PlotSeries s;
+  if (mesh.node_sets.count("y0_neg") != 0) {
+    const LineProfile neg = line_profile(mesh, st, "y0_neg", h0);
+    for (std::size_t i = neg.nodes.size(); i-- > 1;) {  // the centre comes with the x >= 0 half
+      s.x.push_back(-neg.r0_mm[i]);
+      s.y.push_back(neg.eps_thickness[i]);
+    }
+  }
+  const LineProfile pos = line_profile(mesh, st, "y0", h0);
+  s.x.insert(s.x.end(), pos.r0_mm.begin(), pos.r0_mm.end());
+  s.y.insert(s.y.end(), pos.eps_thickness.begin(), pos.eps_thickness.end());
+  return s;
+}
 
 std::string title(const Scene& scene, const Shell3dResult& result, const std::string& what) {
   std::string t = scene.title.empty() ? what : scene.title + ": " + what;
@@ -41,17 +70,17 @@ SvgFigure load_travel_figure(const Scene& scene, const Shell3dResult& result) {
 
 SvgFigure thickness_figure(const Scene& scene, const Shell3dResult& result) {
   SvgFigure f;
-  f.title = title(scene, result, "thickness strain along the symmetry line y = 0");
-  f.x_label = "initial distance from the axis [mm]";
+  const bool full = scene.blank.symmetry == BlankSymmetry::kFull;
+  f.title = title(scene, result,
+                  full ? "thickness strain along the line y = 0"
+                       : "thickness strain along the symmetry line y = 0");
+  f.x_label = "initial x on y = 0 [mm]";
   f.y_label = "thickness strain [-]";
   for (std::size_t k = 0; k < result.stages.size(); ++k) {
     const ShellStage& st = result.stages[k];
     if (k > 0 && st.punch_travel_mm == result.stages[k - 1].punch_travel_mm) continue;
-    const LineProfile p = line_profile(result.mesh, st, "y0", scene.blank.thickness_mm);
-    PlotSeries s;
+    PlotSeries s = y0_series(result.mesh, st, scene.blank.thickness_mm);
     s.label = fmt::format("travel {:.2f} mm", st.punch_travel_mm);
-    s.x = p.r0_mm;
-    s.y = p.eps_thickness;
     s.style = SeriesStyle::kLineAndMarkers;
     f.series.push_back(std::move(s));
   }
@@ -96,7 +125,7 @@ std::string travel_name(const std::string& stem, double travel, const std::strin
 std::string profiles_csv(const ShellMesh& mesh, const ShellStage& stage,
                          double initial_thickness_mm) {
   std::string out = "line,node,r0_mm,r_mm,z_mm,thickness_mm,eps_thickness,contact_tool\n";
-  for (const char* line : kLines) {
+  for (const std::string& line : profile_lines(mesh)) {
     const LineProfile p = line_profile(mesh, stage, line, initial_thickness_mm);
     for (std::size_t i = 0; i < p.nodes.size(); ++i) {
       out += fmt::format("{},{},{},{},{},{},{},{}\n", line, p.nodes[i], format_number(p.r0_mm[i]),
