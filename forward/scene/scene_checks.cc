@@ -102,11 +102,13 @@ void check_tools(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
 
 void check_blank(const Scene& scene, const ToolRoles& roles, const SceneSourceMap& where) {
   const BlankSpec& blank = scene.blank;
-  if (scene.geometry == Geometry::kShell3d && roles.holder != nullptr) {
-    where.fail(tool_address(*roles.holder, "kind"),
-               fmt::format("blank holder '{}': geometry = \"shell3d\" has no blank holder yet "
-                           "(use the axisymmetric geometry or a clamped / pinned edge)",
-                           roles.holder->name));
+  if (scene.geometry == Geometry::kShell3d && roles.holder != nullptr &&
+      roles.holder->gap_mm > 0.0) {
+    where.fail(tool_address(*roles.holder, "gap_mm"),
+               fmt::format("{} = {}: geometry = \"shell3d\" has no fixed-gap blank holder yet "
+                           "(use {}, or the axisymmetric geometry)",
+                           tool_address(*roles.holder, "gap_mm"), roles.holder->gap_mm,
+                           tool_address(*roles.holder, "force_N")));
   }
   if (blank.edge == EdgeCondition::kFree && roles.die == nullptr) {
     where.fail("blank.edge",
@@ -160,7 +162,7 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "Thin shell: blank `thickness_mm` < blank `radius_mm` / 5.",
       "`output_travels_mm` strictly increasing, each in (0, `punch_travel_mm`].",
       "Keys marked 'axisymmetric only' / 'shell3d only' are rejected in scenes of the other "
-      "`geometry`; `geometry = \"shell3d\"` has no blank holder yet.",
+      "`geometry`; `geometry = \"shell3d\"` has no fixed-gap blank holder (`gap_mm`) yet.",
   };
   return rules;
 }

@@ -127,6 +127,7 @@ void Driver::attach(FormingState& s, int node, int tool) const {
   c.tool = tool;
   c.normal = p.normal;
   c.normal_force_N = keep;
+  c.on_die_face = p.on_die_face;
   s.x[node] = p.surface_point;
 }
 
@@ -170,6 +171,7 @@ bool Driver::solve(Solved* out, double dt_predicted, std::string* why) {
   constexpr double kReleaseFraction = 1e-4;
   constexpr double kStickingPullOff = 0.25;
   for (int round = 0; round < kMaxRounds; ++round) {
+    model_.update_holder(&s);  // the flange on the die face may have changed (released nodes)
     model_.prepare(s);
     FormingStepProblem problem(model_, &s);
     Eigen::VectorXd x = problem.start();

@@ -50,13 +50,10 @@ FormingModel::FormingModel(const Scene& scene)
   friction_velocity_ = scene.numerics.friction_regularisation * scene.process.punch_speed_mm_per_s;
   for (std::size_t i = 0; i < tools_.size(); ++i) {
     if (tools_[i].is_punch()) punch_ = static_cast<int>(i);
+    if (tools_[i].kind() == ToolKind::kDie) die_ = static_cast<int>(i);
   }
   if (punch_ < 0) throw InputError(scene.source + ": the scene has no punch");
-  for (const ToolSpec& t : scene.tools) {
-    if (t.kind == ToolKind::kBlankHolder) {
-      throw InputError(scene.source + ": geometry = \"shell3d\" has no blank holder yet");
-    }
-  }
+  read_holder(scene);
   const int nn = num_nodes();
   const double tol = 1e-9 * scene.blank.radius_mm;
   axis_.assign(nn, 0);
@@ -96,6 +93,45 @@ int FormingModel::spin_reference(const std::vector<int>& line) const {
   }
   if (far < 0) throw InputError(scene_.source + ": blank.symmetry: the mesh has no line y = 0");
   return far;
+}
+
+void FormingModel::read_holder(const Scene& scene) {
+  for (const ToolSpec& t : scene.tools) {
+    if (t.kind != ToolKind::kBlankHolder) continue;
+    // The scene checks reject these too; the model repeats them for scenes built in code.
+    if (t.gap_mm > 0.0) {
+      throw InputError(scene.source + ": tool." + t.name +
+                       ".gap_mm: geometry = \"shell3d\" has no fixed-gap blank holder yet "
+                       "(use force_N)");
+    }
+    if (!(t.force_N > 0.0)) {
+      throw InputError(scene.source + ": tool." + t.name + ".force_N must be > 0");
+    }
+    if (std::isinf(t.friction)) {
+      throw InputError(scene.source + ": tool." + t.name +
+                       ".friction: blank holder friction cannot be sticking (inf)");
+    }
+    if (die_ < 0) throw InputError(scene.source + ": a blank holder needs a die");
+    holder_force_ = t.force_N;
+    holder_friction_ = t.friction;
+  }
+}
+
+void FormingModel::update_holder(FormingState* s) const {
+  for (NodeContact3& c : s->contact) c.holder_force_N = 0.0;
+  if (!has_holder()) return;
+  const std::vector<double> area = lumped_areas(s->x);
+  double total = 0.0;
+  for (int i = 0; i < num_nodes(); ++i) {
+    if (s->contact[i].tool == die_ && s->contact[i].on_die_face) total += area[i];
+  }
+  if (!(total > 0.0)) return;  // no flange left on the die face: nothing to press
+  // The meshed part (a quarter, or the full blank) carries its share of the whole-blank force.
+  const double share = holder_force_ / symmetry_factor();
+  for (int i = 0; i < num_nodes(); ++i) {
+    NodeContact3& c = s->contact[i];
+    if (c.tool == die_ && c.on_die_face) c.holder_force_N = share * area[i] / total;
+  }
 }
 
 FormingState FormingModel::initial_state() const {
@@ -147,6 +183,8 @@ FormingModel::ToolProjection FormingModel::project(int tool, const Vec3& x, doub
   const ClosestPoint c = tools_[tool].closest(Eigen::Vector2d(r, x.z()));
   ToolProjection p;
   p.gap = c.distance - 0.5 * h;
+  // Primitive 0 of the die profile is its flat face (make_tools).
+  p.on_die_face = tool == die_ && c.primitive == 0;
   const Eigen::Vector2d on = c.point + 0.5 * h * c.normal;
   if (axis_node || r == 0.0) {
     // On the axis the normal is vertical by symmetry and the node stays on the axis.
@@ -342,6 +380,15 @@ void FormingModel::element_kernel(const FormingState& s, int e, const Eigen::Vec
   c->potential = out.potential;
 }
 
+double FormingModel::friction_limit(const NodeContact3& c) const {
+  // Coulomb limit: the tool's coefficient times the lagged normal reaction (which on the die face
+  // includes the holder's push), plus the holder's own friction on the other face of the flange
+  // under its share of the holder force (as AxisymModel::friction_terms).
+  double limit = tools_[c.tool].friction() * std::max(c.normal_force_N, 0.0);
+  if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
+  return limit;
+}
+
 void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix,
                             double theta, Shell9Stiffness kind, FormingSystem* out) {
   SparseMatrix& K = assembler_->matrix();
@@ -350,12 +397,13 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     const NodeContact3& c = s.contact[i];
     if (c.tool < 0) continue;
     const RigidTool& tool = tools_[c.tool];
-    if (tool.sticking() || tool.friction() == 0.0) continue;
+    if (tool.sticking()) continue;
+    const double limit = friction_limit(c);
+    if (limit == 0.0) continue;
     const Mat3& Q = frame_[i];
     const Vec3 w(0.0, 0.0, tool.velocity().y());
     const int d = model_->dof(i, 0);
     const Eigen::Vector2d slip(x(d) - w.dot(Q.col(0)), x(d + 1) - w.dot(Q.col(1)));
-    const double limit = tool.friction() * std::max(c.normal_force_N, 0.0);
     const double v = slip.norm(), a = v / v0, at = std::atan(a);
     const double f = limit * kTwoOverPi * at;
     const double ks = a < 1e-8 ? limit * kTwoOverPi / v0 : f / v;
@@ -370,6 +418,22 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     }
     for (int p = 0; p < 2; ++p)
       for (int q = 0; q < 2; ++q) K.coeffRef(d + p, d + q) += k2(p, q);
+  }
+}
+
+void FormingModel::holder_loads(const FormingState& s, const Eigen::VectorXd& x,
+                                FormingSystem* out) const {
+  // The holder pushes each flange node up (+z) onto the die face: an external load in the nodal
+  // frame, with its work in the potential. On the flat face it lies along the prescribed normal
+  // dof, so it only adds to the die's normal reaction (and so to the die's friction).
+  out->external_force.setZero(num_dofs());
+  for (int i = 0; i < num_nodes(); ++i) {
+    const double f = s.contact[i].holder_force_N;
+    if (f == 0.0) continue;
+    const int d = model_->dof(i, 0);
+    const Vec3 local = frame_[i].transpose() * (f * Vec3::UnitZ());
+    out->external_force.segment<3>(d) = local;
+    out->potential -= local.dot(x.segment<3>(d));
   }
 }
 
@@ -432,7 +496,8 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
   if (dual) dual_prepare(x);
   out->potential = assembler_->assemble(kernel, x, want, &out->internal_force);
   if (dual) dual_finish(x);
-  out->residual = out->internal_force;
+  holder_loads(s, x, out);
+  out->residual = out->internal_force - out->external_force;
   friction(s, x, want, theta, kind, out);
   for (int k = 0; k < num_dofs(); ++k)
     if (mask_[k]) out->residual(k) = 0.0;

@@ -17,6 +17,9 @@
 //   - Coulomb friction (regularised like the axisymmetric model: |f| = mu N 2/pi atan(|s|/v0)
 //     along the relative slip s in the (a1, a2) plane) uses the normal reaction N lagged by one
 //     iteration (FormingStepProblem).
+// A force blank holder (update_holder) is a load +z on the flange nodes touching the die's flat
+// face, shared by lumped nodal area; it adds to the die's normal reaction and brings its own
+// Coulomb friction (friction_limit), as in the axisymmetric model.
 // The thickness is nodal, from exact conservation of each node's lumped volume h0 A0_i = h A_i
 // with A_i = integral of N_i over the current mid-surface (the 3D analogue of the axisymmetric
 // element volume / area).
@@ -42,6 +45,8 @@ struct NodeContact3 {
   int tool = -1;                // index into tools, -1 = free
   Vec3 normal = Vec3::UnitZ();  // from the tool into the sheet
   double normal_force_N = 0.0;  // lagged normal reaction of this node (meshed part)
+  bool on_die_face = false;     // touching the flat face of the die (the flange)
+  double holder_force_N = 0.0;  // force holder: this node's share pressing it up (meshed part)
 };
 
 // Everything that changes from step to step.
@@ -60,7 +65,8 @@ struct FormingState {
 // One evaluation in the nodal frames; the matrix lives in the model's assembler.
 struct FormingSystem {
   Eigen::VectorXd residual;        // local frames; zero at prescribed dofs
-  Eigen::VectorXd internal_force;  // element forces, local frames (reactions at contact nodes)
+  Eigen::VectorXd internal_force;  // element forces, local frames
+  Eigen::VectorXd external_force;  // blank-holder loads, local frames
   double potential = 0.0;          // flow potential incl. friction (line-search merit)
 };
 
@@ -89,6 +95,14 @@ class FormingModel {
   const Vec3& initial_position(int node) const { return mesh_.nodes[node]; }
   double initial_thickness() const { return scene_.blank.thickness_mm; }
   bool on_axis(int node) const { return axis_[node] != 0; }
+  // Force blank holder (tool kind blank_holder with force_N): whole-blank force and friction.
+  bool has_holder() const { return holder_force_ > 0.0; }
+  int die_index() const { return die_; }
+  // Spreads the holder force over the flange nodes on the die face (on_die_face), each node's
+  // share proportional to its lumped area integral N_i dA in state s (as
+  // AxisymModel::update_holder with its nodal ring areas): the consistent nodal loads of a
+  // uniform holder pressure on those nodes' areas. Zeroes the shares of every other node.
+  void update_holder(FormingState* s) const;
   // Nodes whose boundary condition (blank.edge) forbids contact (pinned / clamped edge).
   bool contact_eligible(int node) const { return eligible_[node] != 0; }
   // Mesh neighbours (nodes sharing an element), sorted.
@@ -150,6 +164,7 @@ class FormingModel {
     double gap = 0.0;
     Vec3 normal = Vec3::UnitZ();
     Vec3 surface_point = Vec3::Zero();  // mid-surface position touching the tool
+    bool on_die_face = false;           // closest point on the die's flat face
   };
   ToolProjection project(int tool, const Vec3& x, double h, bool axis_node) const;
 
@@ -167,6 +182,9 @@ class FormingModel {
   // The node whose circumferential velocity fixes the rotation about z of a free full blank: the
   // outermost node of `line` (on y = 0, where that velocity vanishes by mirror symmetry).
   int spin_reference(const std::vector<int>& line) const;
+  double friction_limit(const NodeContact3& c) const;
+  void holder_loads(const FormingState& s, const Eigen::VectorXd& x, FormingSystem* out) const;
+  void read_holder(const Scene& scene);
 
   Scene scene_;
   ShellMesh mesh_;
@@ -179,7 +197,8 @@ class FormingModel {
   ViscousLaw law_;
   HillPlaneStressLaw hill_;
   std::vector<RigidTool> tools_;
-  int punch_ = -1;
+  int punch_ = -1, die_ = -1;
+  double holder_force_ = 0.0, holder_friction_ = 0.0;  // whole blank [N], Coulomb coefficient
   double nominal_rate_ = 1.0;
   double friction_velocity_ = 1e-4;
   std::vector<char> axis_, sym_, eligible_;

@@ -38,7 +38,7 @@ bool FormingStepProblem::update_lagged(const Eigen::VectorXd& /*x*/) {
   }
   if (!friction) return false;
   std::vector<double> n;
-  reactions(sys_.internal_force, &n);
+  reactions(sys_.internal_force - sys_.external_force, &n);
   const int nn = model_.num_nodes();
   if (relax_.size() != static_cast<std::size_t>(nn)) {
     relax_.assign(nn, 1.0);
@@ -67,12 +67,15 @@ Eigen::VectorXd FormingStepProblem::start() const {
 void FormingStepProblem::finish(const Eigen::VectorXd& x) {
   FormingSystem sys;
   model_.evaluate(*state_, x, Shell9Stiffness::kNone, 0.0, &sys);
-  reactions(sys.internal_force, &normal_, &magnitude_);
+  // The tools' reactions balance the element forces minus the holder loads (a flange node's die
+  // reaction carries the holder force).
+  const Eigen::VectorXd reaction = sys.internal_force - sys.external_force;
+  reactions(reaction, &normal_, &magnitude_);
   const ShellModel& m = model_.shell_model();
   punch_force_ = 0.0;
   for (int i = 0; i < model_.num_nodes(); ++i) {
     if (state_->contact[i].tool != model_.punch_index()) continue;
-    punch_force_ += (model_.frame(i) * sys.internal_force.segment<3>(m.dof(i, 0))).z();
+    punch_force_ += (model_.frame(i) * reaction.segment<3>(m.dof(i, 0))).z();
   }
   punch_force_ *= model_.symmetry_factor();
   model_.point_rates(*state_, x, &rates_);

@@ -38,7 +38,7 @@ class FormingStepProblem : public SparseNonlinearProblem {
   double max_point_rate() const { return max_rate_; }
 
  private:
-  void reactions(const Eigen::VectorXd& internal_force, std::vector<double>* normal,
+  void reactions(const Eigen::VectorXd& reaction, std::vector<double>* normal,
                  std::vector<double>* magnitude = nullptr) const;
 
   FormingModel& model_;
