@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "calibrate_command.h"
-#include "fit_hardening_command.h"
 #include "core/error.h"
+#include "fit_hardening_command.h"
 #include "output/build_info.h"
 #include "output/load_travel_stream.h"
 #include "output/progress.h"

@@ -119,7 +119,8 @@ std::string study_scene(const SceneCase& sc, bool quick, const std::string& out_
   }
   md += fmt::format(
       "Reference levels (elements x 1, 2, 4 up to the finest valid mesh, travel cap 0.1, 0.05, "
-      "0.025 mm and strain cap 0.02, 0.01, 0.005, 9 thickness points, tolerance 1e-8), completed: {} elements ({} ms). {}Peak load {} N: "
+      "0.025 mm and strain cap 0.02, 0.01, 0.005, 9 thickness points, tolerance 1e-8), completed: "
+      "{} elements ({} ms). {}Peak load {} N: "
       "observed order p = {:.2f}, {} -> reference {:.1f} N, estimated error of the reference run "
       "{}. Thinnest point r0 {} mm: p = {:.2f}, {}. Curves and profiles are compared with the "
       "reference run itself.\n\n",
@@ -213,8 +214,8 @@ void ti_measure(TiRun* t) {
 std::string time_integration_study(const std::string& scene_name, const Overrides& scene_ov,
                                    bool quick, const std::string& out_dir) {
   const std::string path = scene_path(VS_SOURCE_DIR, scene_name);
-  const std::vector<double> incs = quick ? std::vector<double>{1.0, 0.5, 0.25}
-                                         : std::vector<double>{1.0, 0.5, 0.25, 0.1, 0.05};
+  const std::vector<double> incs =
+      quick ? std::vector<double>{1.0, 0.5, 0.25} : std::vector<double>{1.0, 0.5, 0.25, 0.1, 0.05};
   const double ref_inc = incs.back() / 4.0;
   auto run = [&](const std::string& scheme, double dt) {
     TiRun t;
@@ -251,11 +252,11 @@ std::string time_integration_study(const std::string& scene_name, const Override
     }
   }
   Table tab, csv;
-  tab.header = {"scheme", "travel inc mm", "cpu ms", "steps", "pole eps_t", "err pole",
-                "order", "min eps_t", "err min", "order", "peak N", "err peak", "order"};
-  csv.header = {"scheme",   "travel_inc_mm", "cpu_ms",    "wall_ms",     "steps",
-                "completed", "pole_eps_t",   "err_pole",  "order_pole",  "min_eps_t",
-                "err_min",   "order_min",    "peak_N",    "err_peak",    "order_peak"};
+  tab.header = {"scheme",    "travel inc mm", "cpu ms", "steps",  "pole eps_t", "err pole", "order",
+                "min eps_t", "err min",       "order",  "peak N", "err peak",   "order"};
+  csv.header = {"scheme",    "travel_inc_mm", "cpu_ms",   "wall_ms",    "steps",
+                "completed", "pole_eps_t",    "err_pole", "order_pole", "min_eps_t",
+                "err_min",   "order_min",     "peak_N",   "err_peak",   "order_peak"};
   auto f2 = [](double x) { return x == x ? fmt::format("{:.2f}", x) : std::string("-"); };
   auto e2 = [](double x) { return x == x ? fmt::format("{:.2e}", x) : std::string("-"); };
   for (const TiRun* t : [&] {
@@ -265,16 +266,15 @@ std::string time_integration_study(const std::string& scene_name, const Override
          return v;
        }()) {
     const bool is_ref = t == &ref;
-    tab.add({is_ref ? "heun (reference)" : t->scheme, fmt::format("{}", t->dt_mm),
-             ms(t->run.cpu_s), std::to_string(t->run.result.steps.size()),
-             fmt::format("{:.5f}", t->pole), is_ref ? "-" : e2(t->e_pole), f2(t->p_pole),
-             fmt::format("{:.5f}", t->thin), is_ref ? "-" : e2(t->e_thin), f2(t->p_thin),
-             fmt::format("{:.1f}", t->peak), is_ref ? "-" : pct(t->e_peak), f2(t->p_peak)});
+    tab.add({is_ref ? "heun (reference)" : t->scheme, fmt::format("{}", t->dt_mm), ms(t->run.cpu_s),
+             std::to_string(t->run.result.steps.size()), fmt::format("{:.5f}", t->pole),
+             is_ref ? "-" : e2(t->e_pole), f2(t->p_pole), fmt::format("{:.5f}", t->thin),
+             is_ref ? "-" : e2(t->e_thin), f2(t->p_thin), fmt::format("{:.1f}", t->peak),
+             is_ref ? "-" : pct(t->e_peak), f2(t->p_peak)});
     csv.add({is_ref ? "heun_reference" : t->scheme, g4(t->dt_mm), ms(t->run.cpu_s),
              ms(t->run.wall_s), std::to_string(t->run.result.steps.size()),
              t->run.result.completed() ? "yes" : "no", g4(t->pole), g4(t->e_pole), g4(t->p_pole),
-             g4(t->thin), g4(t->e_thin), g4(t->p_thin), g4(t->peak), g4(t->e_peak),
-             g4(t->p_peak)});
+             g4(t->thin), g4(t->e_thin), g4(t->p_thin), g4(t->peak), g4(t->e_peak), g4(t->p_peak)});
   }
   write_text(out_dir + "/time_integration.csv", csv.csv());
   // Plots: error against run time per scheme.
@@ -327,8 +327,8 @@ std::string time_integration_study(const std::string& scene_name, const Override
              "between neighbouring increments.{}\n\n",
              scene_name, scene_name, cli_args(scene_ov), ref_inc,
              any_warn ? " (solver warnings were raised: check the mesh)" : "") +
-         tab.markdown() +
-         "\nCheapest increment reaching a pole thickness-strain error:\n\n" + cheap.markdown() +
+         tab.markdown() + "\nCheapest increment reaching a pole thickness-strain error:\n\n" +
+         cheap.markdown() +
          fmt::format(
              "\nFigures: [pole strain](02_work_precision/results/time_integration_pole.svg), "
              "[min strain](02_work_precision/results/time_integration_min.svg), [peak "
@@ -349,11 +349,12 @@ int main(int argc, char** argv) {
          "Quick variant: example 1 to 10 mm travel."});
   } else {
     cases.push_back({"ex1_hemispherical_stretching", {}, "Bundled scene as is (30 mm travel)."});
-    cases.push_back({"ex2_hemispherical_deep_drawing",
-                     {{"process.punch_travel_mm", "38"},
-                      {"process.output_travels_mm", "[10.0, 20.0, 30.0, 38.0]"}},
-                     "Travel 38 mm (kept from the older studies, where the bundled 40 mm run stopped "
-                     "at 39.84 mm; it now completes, see the stability study)."});
+    cases.push_back(
+        {"ex2_hemispherical_deep_drawing",
+         {{"process.punch_travel_mm", "38"},
+          {"process.output_travels_mm", "[10.0, 20.0, 30.0, 38.0]"}},
+         "Travel 38 mm (kept from the older studies, where the bundled 40 mm run stopped "
+         "at 39.84 mm; it now completes, see the stability study)."});
     cases.push_back({"ex3_flat_punch_cup",
                      {{"blank.elements", "50"}},
                      "50 elements instead of the bundled 80 (80 elements are 0.67 mm long, shorter "
@@ -378,12 +379,11 @@ int main(int argc, char** argv) {
     md += study_scene(sc, args.quick, args.out_dir, &csv);
   }
   std::cout << "time integration (ex1)\n";
-  md += time_integration_study(
-      "ex1_hemispherical_stretching",
-      args.quick ? Overrides{{"process.punch_travel_mm", "10"},
-                             {"process.output_travels_mm", "[5.0, 10.0]"}}
-                 : Overrides{},
-      args.quick, args.out_dir);
+  md += time_integration_study("ex1_hemispherical_stretching",
+                               args.quick ? Overrides{{"process.punch_travel_mm", "10"},
+                                                      {"process.output_travels_mm", "[5.0, 10.0]"}}
+                                          : Overrides{},
+                               args.quick, args.out_dir);
   write_text(args.out_dir + "/work_precision.csv", csv.csv());
   write_text(args.out_dir + "/summary.md", md);
   std::cout << "\n" << md << "wrote " << args.out_dir << "\n";

@@ -83,9 +83,10 @@ inline CupHeight evaluate_cup(const vs::RunResult& result, const CupGeometry& g)
   return out;
 }
 
-// The bundled cup scene (or its fixed-gap variant) with the per-step history on and the given overrides. An override of
-// material.hardening.law first clears the scene's hardening table (the Swift keys of the bundled
-// scene are not accepted by a Voce law), so the overrides must then give every parameter.
+// The bundled cup scene (or its fixed-gap variant) with the per-step history on and the given
+// overrides. An override of material.hardening.law first clears the scene's hardening table (the
+// Swift keys of the bundled scene are not accepted by a Voce law), so the overrides must then give
+// every parameter.
 inline vs::Scene make_cup_scene(const std::string& source_dir, const Overrides& ov,
                                 const std::string& scene_name = "ex3_flat_punch_cup") {
   const std::string path = scene_path(source_dir, scene_name);

@@ -79,37 +79,37 @@ int main(int argc, char** argv) {
   const std::vector<std::pair<std::string, std::string>> holders = {
       {"force 10 kN", "ex3_flat_punch_cup"}, {"gap 1.04 mm", "ex3_flat_punch_cup_fixed_gap"}};
   for (const auto& [holder, scene_name] : holders) {
-  for (const Fit& fit : fits) {
-    for (const std::string& mu : frictions) {
-      Overrides ov = fit.set;
-      ov.push_back({"process.punch_travel_mm", "45"});
-      ov.push_back({"process.output_travels_mm", "[45.0]"});
-      for (const char* tool : {"punch", "die", "holder"}) {
-        ov.push_back({std::string("tool.") + tool + ".friction", mu});
+    for (const Fit& fit : fits) {
+      for (const std::string& mu : frictions) {
+        Overrides ov = fit.set;
+        ov.push_back({"process.punch_travel_mm", "45"});
+        ov.push_back({"process.output_travels_mm", "[45.0]"});
+        for (const char* tool : {"punch", "die", "holder"}) {
+          ov.push_back({std::string("tool.") + tool + ".friction", mu});
+        }
+        const vs::Scene scene = make_cup_scene(VS_SOURCE_DIR, ov, scene_name);
+        const TimedRun run = run_once(scene, 600.0);
+        const CupHeight cup = evaluate_cup(run.result, cup_geometry(scene));
+        const double diff = cup.height_mm - kMeasuredMean;
+        const bool within = cup.height_mm >= kMeasuredMin && cup.height_mm <= kMeasuredMax;
+        table.add(
+            {holder, fit.name, mu, cup.drawn ? "yes" : "no", fmt::format("{:.2f}", cup.height_mm),
+             fmt::format("{:+.2f}", diff), fmt::format("{:+.1f}", 100.0 * diff / kMeasuredMean),
+             within ? "yes" : "no", fmt::format("{:.2f}", cup.travel_mm),
+             fmt::format("{:.2f}", cup.height_end_mm),
+             fmt::format("{:.2f}", cup.flange_off_travel_mm),
+             fmt::format("{:.2f}", cup.peak_force_N / 1e3),
+             fmt::format("{:.2f}", cup.peak_force_travel_mm),
+             std::to_string(run.result.steps.size()), fmt::format("{:.2f}", run.wall_s),
+             run.result.completed()
+                 ? std::string("completed 45 mm")
+                 : fmt::format(
+                       "no convergence at {:.2f} mm",
+                       run.result.steps.empty() ? 0.0 : run.result.steps.back().punch_travel_mm)});
+        std::cout << table.text() << std::flush;
+        if (!run.result.completed()) std::cerr << "run stopped: " << run.result.message << '\n';
       }
-      const vs::Scene scene = make_cup_scene(VS_SOURCE_DIR, ov, scene_name);
-      const TimedRun run = run_once(scene, 600.0);
-      const CupHeight cup = evaluate_cup(run.result, cup_geometry(scene));
-      const double diff = cup.height_mm - kMeasuredMean;
-      const bool within = cup.height_mm >= kMeasuredMin && cup.height_mm <= kMeasuredMax;
-      table.add(
-          {holder, fit.name, mu, cup.drawn ? "yes" : "no", fmt::format("{:.2f}", cup.height_mm),
-           fmt::format("{:+.2f}", diff), fmt::format("{:+.1f}", 100.0 * diff / kMeasuredMean),
-           within ? "yes" : "no", fmt::format("{:.2f}", cup.travel_mm),
-           fmt::format("{:.2f}", cup.height_end_mm),
-           fmt::format("{:.2f}", cup.flange_off_travel_mm),
-           fmt::format("{:.2f}", cup.peak_force_N / 1e3),
-           fmt::format("{:.2f}", cup.peak_force_travel_mm), std::to_string(run.result.steps.size()),
-           fmt::format("{:.2f}", run.wall_s),
-           run.result.completed()
-               ? std::string("completed 45 mm")
-               : fmt::format(
-                     "no convergence at {:.2f} mm",
-                     run.result.steps.empty() ? 0.0 : run.result.steps.back().punch_travel_mm)});
-      std::cout << table.text() << std::flush;
-      if (!run.result.completed()) std::cerr << "run stopped: " << run.result.message << '\n';
     }
-  }
   }
   const std::string name = args.quick ? "cup_heights_quick" : "cup_heights";
   write_text(args.out_dir + "/" + name + ".csv", table.csv());

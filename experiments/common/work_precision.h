@@ -56,8 +56,8 @@ struct Reference {
 // shell meshes are outside the thin-shell model (the solver warns, RunResult.warnings) and their
 // contact reactions are noisy, so they are neither studied nor used as references.
 inline int max_valid_elements(const vs::Scene& scene) {
-  return std::max(4, static_cast<int>(std::floor(scene.blank.radius_mm / scene.blank.thickness_mm +
-                                                 1e-9)));
+  return std::max(
+      4, static_cast<int>(std::floor(scene.blank.radius_mm / scene.blank.thickness_mm + 1e-9)));
 }
 
 // The settings: one knob at a time around the scene's bundled numerics, a few coarse
@@ -70,21 +70,20 @@ inline std::vector<Setting> work_precision_settings(int base_elements, int max_e
                                                     bool quick) {
   std::vector<Setting> s;
   auto el = [&](double f) {
-    return std::to_string(
-        std::min(max_elements, std::max(4, static_cast<int>(base_elements * f))));
+    return std::to_string(std::min(max_elements, std::max(4, static_cast<int>(base_elements * f))));
   };
   s.push_back({"bundled", "bundled", {}});
   {
-    std::vector<int> meshes = quick ? std::vector<int>{max_elements / 4, max_elements / 2}
-                                    : std::vector<int>{max_elements / 4, max_elements / 2,
-                                                       max_elements};
+    std::vector<int> meshes =
+        quick ? std::vector<int>{max_elements / 4, max_elements / 2}
+              : std::vector<int>{max_elements / 4, max_elements / 2, max_elements};
     for (int n : meshes) {
       if (n == base_elements || n < 4) continue;
       s.push_back({"elements", std::to_string(n), {{"blank.elements", std::to_string(n)}}});
     }
   }
-  for (const char* v : quick ? std::vector<const char*>{"2"}
-                             : std::vector<const char*>{"2", "1", "0.5", "0.125"}) {
+  for (const char* v :
+       quick ? std::vector<const char*>{"2"} : std::vector<const char*>{"2", "1", "0.5", "0.125"}) {
     s.push_back({"travel cap",
                  v,
                  {{"numerics.max_travel_increment_mm", v},

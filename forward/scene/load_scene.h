@@ -3,11 +3,11 @@
 // naming file, line and key.
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <string>
 
 #include "scene/scene.h"
-
-#include <toml++/toml.h>
 
 namespace vs {
 

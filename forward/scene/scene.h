@@ -34,10 +34,10 @@ enum class EdgeCondition {
 };
 
 struct BlankSpec {
-  double radius_mm = 50.0;     // initial outer radius
-  double thickness_mm = 1.0;   // initial thickness
-  int elements = 50;           // number of 2-node elements along the meridian
-  double grading = 1.0;        // length ratio last/first element (geometric grading), > 0
+  double radius_mm = 50.0;    // initial outer radius
+  double thickness_mm = 1.0;  // initial thickness
+  int elements = 50;          // number of 2-node elements along the meridian
+  double grading = 1.0;       // length ratio last/first element (geometric grading), > 0
   EdgeCondition edge = EdgeCondition::kPinned;
   // geometry = shell3d only:
   BlankShape shape = BlankShape::kCircle;
@@ -54,12 +54,12 @@ enum class HardeningLaw {
 
 struct HardeningSpec {
   HardeningLaw law = HardeningLaw::kSwift;
-  double K_MPa = 500.0;      // Swift, Hollomon strength coefficient
-  double eps0 = 0.01;        // Swift pre-strain
-  double n = 0.2;            // Swift, Hollomon hardening exponent
-  double sigma0_MPa = 200.0; // Hollomon initial yield, Voce initial yield
-  double Q_MPa = 100.0;      // Voce saturation increment
-  double b = 10.0;           // Voce rate
+  double K_MPa = 500.0;                  // Swift, Hollomon strength coefficient
+  double eps0 = 0.01;                    // Swift pre-strain
+  double n = 0.2;                        // Swift, Hollomon hardening exponent
+  double sigma0_MPa = 200.0;             // Hollomon initial yield, Voce initial yield
+  double Q_MPa = 100.0;                  // Voce saturation increment
+  double b = 10.0;                       // Voce rate
   std::vector<double> table_strain;      // kTable: effective plastic strain, strictly increasing
   std::vector<double> table_stress_MPa;  // kTable: flow stress, > 0
   double table_scale = 1.0;              // kTable: multiplies every stress (calibration handle)
@@ -73,10 +73,10 @@ enum class RateLaw {
 
 struct RateSpec {
   RateLaw law = RateLaw::kNone;
-  double gamma_per_s = 1.0;          // Perzyna fluidity
-  double exponent = 1.0;             // Perzyna exponent (not the hardening n)
-  double m = 0.01;                   // power-law rate sensitivity
-  double reference_rate_per_s = 1.0; // power-law reference strain rate
+  double gamma_per_s = 1.0;           // Perzyna fluidity
+  double exponent = 1.0;              // Perzyna exponent (not the hardening n)
+  double m = 0.01;                    // power-law rate sensitivity
+  double reference_rate_per_s = 1.0;  // power-law reference strain rate
 };
 
 struct MaterialSpec {
@@ -98,19 +98,19 @@ enum class ToolKind {
 struct ToolSpec {
   std::string name;  // unique label used in outputs and calibration addresses
   ToolKind kind = ToolKind::kHemisphericalPunch;
-  double radius_mm = 50.0;          // punch radius / die opening radius
-  double profile_radius_mm = 5.0;   // flat-punch nose radius / die shoulder radius
+  double radius_mm = 50.0;         // punch radius / die opening radius
+  double profile_radius_mm = 5.0;  // flat-punch nose radius / die shoulder radius
   // Coulomb coefficient between this tool and the sheet; +infinity means sticking.
   double friction = 0.0;
-  double force_N = 0.0;             // blank holder: total (360 degree) holding force, or
-  double gap_mm = 0.0;              // blank holder: fixed gap to the die face (exactly one > 0)
+  double force_N = 0.0;  // blank holder: total (360 degree) holding force, or
+  double gap_mm = 0.0;   // blank holder: fixed gap to the die face (exactly one > 0)
   bool sticking() const { return friction == std::numeric_limits<double>::infinity(); }
 };
 
 struct ProcessSpec {
-  double punch_travel_mm = 10.0;           // total punch travel
-  double punch_speed_mm_per_s = 1.0;       // matters only for rate-sensitive materials
-  std::vector<double> output_travels_mm;   // travels at which strain distributions are written
+  double punch_travel_mm = 10.0;          // total punch travel
+  double punch_speed_mm_per_s = 1.0;      // matters only for rate-sensitive materials
+  std::vector<double> output_travels_mm;  // travels at which strain distributions are written
 };
 
 enum class SolverKind {
@@ -130,22 +130,22 @@ enum class ShellElementRule {
 };
 
 struct NumericsSpec {
-  int thickness_points = 5;              // Simpson points through the thickness: 3, 5, 7 or 9
+  int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
   TimeIntegration time_integration = TimeIntegration::kHeun;
-  double tolerance = 1e-6;               // relative velocity change and relative residual
-  int max_iterations = 100;              // per step, before the step is cut back
-  double step_fraction = 1.0;            // fraction of the contact-event step taken when far
+  double tolerance = 1e-6;                // relative velocity change and relative residual
+  int max_iterations = 100;               // per step, before the step is cut back
+  double step_fraction = 1.0;             // fraction of the contact-event step taken when far
   double max_travel_increment_mm = 0.25;  // cap on punch travel per step
   // Second cap on the travel per step, relative to the shortest initial element length. The
   // explicit (Heun) geometry update is stable only below a travel increment proportional to the
   // element length: above it the deformation mechanism of nearly rigid free regions switches from
   // step to step and outputs jitter by up to 1 % (experiments/06_step_stability).
   double max_travel_increment_per_length = 0.025;
-  double max_strain_increment = 0.02;    // cap on effective strain increment per step
-  double strain_rate_cutoff = 1e-4;      // cut-off rate, relative to punch_speed / blank radius
-  double friction_regularisation = 1e-4; // Coulomb arctan velocity, relative to punch speed
-  int max_cutbacks = 8;                  // step halvings before the run stops
+  double max_strain_increment = 0.02;     // cap on effective strain increment per step
+  double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius
+  double friction_regularisation = 1e-4;  // Coulomb arctan velocity, relative to punch speed
+  int max_cutbacks = 8;                   // step halvings before the run stops
   ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
 };
 

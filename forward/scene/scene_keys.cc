@@ -230,8 +230,7 @@ std::vector<KeySpec> build_keys() {
   add(make("tool", "friction", kFloat, float_field<&tool, &ToolSpec::friction>(), "",
            closed(0, kInf), "Coulomb coefficient with the sheet; inf or \"sticking\" = no slip."))
       .sticking_alias = true;
-  add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N",
-           open_above(0),
+  add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N", open_above(0),
            "Blank holder with a prescribed total (360 degree) force, shared over the flange nodes "
            "on the die face. Give either force_N or gap_mm."))
       .applies_to = {"blank_holder"};
@@ -262,8 +261,8 @@ std::vector<KeySpec> build_keys() {
   add(choice(nu, "solver", enum_field<&numerics, &NumericsSpec::solver>(), {"newton", "picard"},
              "newton: direct iterations then Newton with line search; picard: the paper's "
              "direct iteration only."));
-  add(choice(nu, "time_integration",
-             enum_field<&numerics, &NumericsSpec::time_integration>(), {"heun", "euler"},
+  add(choice(nu, "time_integration", enum_field<&numerics, &NumericsSpec::time_integration>(),
+             {"heun", "euler"},
              "heun: predictor-corrector geometry update (two solves per step, second order); "
              "euler: the paper's update with the start-of-step velocity (first order)."));
   add(make(nu, "tolerance", kFloat, float_field<&numerics, &NumericsSpec::tolerance>(), "",

@@ -14,9 +14,9 @@
 // is then overridden). Integers (blank.elements, ...) accept whole numbers only.
 #pragma once
 
-#include <string>
-
 #include <toml++/toml.h>
+
+#include <string>
 
 namespace vs {
 

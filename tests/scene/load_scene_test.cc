@@ -135,7 +135,7 @@ TEST(SceneDefaultsToml, IsValidTomlThatLoadsOnceAPunchIsAdded) {
   const std::string text = scene_defaults_toml();
   EXPECT_NE(text.find("thickness_mm = 1.0"), std::string::npos);
   EXPECT_NE(text.find("# sigma0_MPa = 200.0"), std::string::npos);  // hollomon/voce only
-  EXPECT_NE(text.find("# gap_mm = 0.0"), std::string::npos);  // blank_holder only
+  EXPECT_NE(text.find("# gap_mm = 0.0"), std::string::npos);        // blank_holder only
   // The defaults file has no tools; a scene needs a punch, which must fit the default blank.
   const Scene scene = load_scene(write_scratch(
       "defaults.toml",

@@ -127,9 +127,9 @@ TEST(AxisymForming, StickingIsNeitherPathNorMeshSensitive) {
 // Measured at 0.05 element lengths per step (24 elements): pole element 0.19 before, 0.07 now;
 // near the rim 0.73 before, 0.19 now.
 TEST(AxisymForming, StrainIncrementsDoNotAlternateStepToStep) {
-  const RunResult r = Stretch("0.04", "24",
-                              {{"output.history", "true"},
-                               {"numerics.max_travel_increment_per_length", "0.05"}});
+  const RunResult r =
+      Stretch("0.04", "24",
+              {{"output.history", "true"}, {"numerics.max_travel_increment_per_length", "0.05"}});
   ASSERT_TRUE(r.completed()) << r.message;
   auto alternation = [&](std::size_t e) {
     std::vector<double> rate;

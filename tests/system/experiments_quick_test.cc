@@ -140,14 +140,14 @@ TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
     std::vector<double> mu, f;
     for (int k = 0; k < 5; ++k) {
       const double m = 0.099 + 0.0005 * k;
-      const vs::Scene scene = make_scene(
-          kEx1, {{"blank.elements", "24"},
-                 {"process.punch_travel_mm", "16"},
-                 {"process.output_travels_mm", "[16.0]"},
-                 {"material.r_value", "1.5"},
-                 {"numerics.tolerance", "1e-8"},
-                 {"numerics.max_travel_increment_per_length", per_length},
-                 {"tool.punch.friction", fmt::format("{:.6f}", m)}});
+      const vs::Scene scene =
+          make_scene(kEx1, {{"blank.elements", "24"},
+                            {"process.punch_travel_mm", "16"},
+                            {"process.output_travels_mm", "[16.0]"},
+                            {"material.r_value", "1.5"},
+                            {"numerics.tolerance", "1e-8"},
+                            {"numerics.max_travel_increment_per_length", per_length},
+                            {"tool.punch.friction", fmt::format("{:.6f}", m)}});
       const TimedRun run = run_once(scene, kInf);
       ASSERT_TRUE(run.result.completed()) << run.result.message;
       mu.push_back(m);
@@ -159,9 +159,10 @@ TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
   double jitter_default = 0, rough_default = 0, jitter_large = 0, rough_large = 0;
   sweep("0.025", &jitter_default, &rough_default);
   sweep("0.1", &jitter_large, &rough_large);
-  fmt::print("step 0.025 l: jitter {:.2e}, roughness {:.3f}; step 0.1 l: jitter {:.2e}, roughness "
-             "{:.3f}\n",
-             jitter_default, rough_default, jitter_large, rough_large);
+  fmt::print(
+      "step 0.025 l: jitter {:.2e}, roughness {:.3f}; step 0.1 l: jitter {:.2e}, roughness "
+      "{:.3f}\n",
+      jitter_default, rough_default, jitter_large, rough_large);
   EXPECT_LT(jitter_default, 1e-5);
   EXPECT_LT(rough_default, 0.1);
   EXPECT_LT(rough_large, 0.1);
