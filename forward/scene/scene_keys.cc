@@ -289,7 +289,10 @@ std::vector<KeySpec> build_keys() {
            "Cap on the effective strain increment per step."));
   add(make(nu, "strain_rate_cutoff", kFloat,
            float_field<&numerics, &NumericsSpec::strain_rate_cutoff>(), "", closed(1e-12, 0.5),
-           "Cut-off strain rate relative to punch_speed / blank radius (rigid regions)."));
+           "Cut-off strain rate relative to punch_speed / blank radius: below it the flow law "
+           "turns viscous (rigid regions creep at about this rate). 1e-2 with "
+           "max_travel_increment_per_length = 0.05 is the speed setting (about half the run "
+           "time, answers within ~1 %; experiments/01_performance)."));
   add(make(nu, "friction_regularisation", kFloat,
            float_field<&numerics, &NumericsSpec::friction_regularisation>(), "", closed(1e-8, 0.1),
            "Coulomb arctan slip velocity relative to the punch speed."));
