@@ -52,6 +52,29 @@ TEST(ExperimentsQuick, PerformanceMeshRefinementConverges) {
   EXPECT_LT(rel(peak[2], peak[3]), 0.01);
 }
 
+// The issue-2 goal at the performance benchmark's speed setting (twice the default travel step,
+// strain-rate cut-off 1e-2), full 30 mm: 24 elements are within 1 % of the finest valid mesh (69)
+// at the same setting in peak load and pole thickness strain (measured 0.24 % / 0.83 %; the time,
+// 40-44 ms CPU, is the benchmark's to measure, not a test's).
+TEST(ExperimentsQuick, PerformanceSpeedSettingIsWithinOnePercentAt24Elements) {
+  auto run = [](int n) {
+    const TimedRun t =
+        run_once(make_scene(kEx1, {{"tool.punch.friction", "0.04"},
+                                   {"blank.elements", std::to_string(n)},
+                                   {"numerics.max_travel_increment_per_length", "0.05"},
+                                   {"numerics.strain_rate_cutoff", "1e-2"}}),
+                 kInf);
+    EXPECT_TRUE(t.result.completed()) << t.result.message;
+    return t;
+  };
+  const TimedRun coarse = run(24), fine = run(69);
+  ASSERT_TRUE(coarse.result.completed() && fine.result.completed());
+  EXPECT_LT(rel(peak_load(coarse.result).force_N, peak_load(fine.result).force_N), 0.01);
+  EXPECT_LT(rel(pole_thickness_strain(coarse.result.profiles.back()),
+                pole_thickness_strain(fine.result.profiles.back())),
+            0.01);
+}
+
 // 02_work_precision in small: refining elements and the step caps together reduces the error of
 // the peak load and of the load curve against the finest level. Meshes 8..64 elements stay within
 // the valid range (element length >= thickness: at most 69 elements for ex1).
