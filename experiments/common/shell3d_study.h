@@ -21,6 +21,7 @@
 #include "scene/load_scene.h"
 #include "shell3d/forming/axisym_comparison.h"
 #include "shell3d/forming/forming_driver.h"
+#include "shell3d/forming/forming_fields.h"
 #include "table.h"
 
 namespace vsx {
@@ -166,18 +167,6 @@ inline AxisymRun run_axisym_twin(const vs::Scene& base, int elements) {
   return a;
 }
 
-// Linear interpolation in increasing x, clamped at the ends.
-inline double interpolate_clamped(const std::vector<double>& x, const std::vector<double>& y,
-                                  double xq) {
-  if (x.empty()) return std::nan("");
-  if (xq <= x.front()) return y.front();
-  if (xq >= x.back()) return y.back();
-  const auto it = std::upper_bound(x.begin(), x.end(), xq);
-  const std::size_t i = static_cast<std::size_t>(it - x.begin());
-  const double w = (xq - x[i - 1]) / (x[i] - x[i - 1]);
-  return (1.0 - w) * y[i - 1] + w * y[i];
-}
-
 // The finer axisymmetric run against the reference, in the same measures as a 3D run (force and
 // mean force over the last `window_mm` at each travel; |d eps_t| at the check run's element
 // midpoints, the reference interpolated at their initial radius): how far the reference itself
@@ -211,7 +200,7 @@ inline std::vector<vs::shell3d::TravelComparison> compare_axisym(const std::vect
     c.mean_force_deviation = (c.mean_force_3d_N - c.mean_force_axisym_N) / c.mean_force_axisym_N;
     double dev = 0.0;
     for (std::size_t i = 0; i < pc->r0_mm.size(); ++i) {
-      const double ref = interpolate_clamped(pr->r0_mm, pr->eps_thickness, pc->r0_mm[i]);
+      const double ref = vs::shell3d::interpolate(pr->r0_mm, pr->eps_thickness, pc->r0_mm[i]);
       dev = std::max(dev, std::abs(pc->eps_thickness[i] - ref));
     }
     c.eps_thickness_deviation_y0 = c.eps_thickness_deviation_x0 =

@@ -38,21 +38,15 @@ struct Gauss {
   std::array<double, 3> x{}, w{};
   int n = 0;
 };
+Gauss make_gauss(int n) {
+  const Rule1D r = gauss_legendre(n);
+  Gauss g;
+  g.n = n;
+  for (int i = 0; i < n; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
+  return g;
+}
 const Gauss& gauss(int n) {
-  static const Gauss g2 = [] {
-    const Rule1D r = gauss_legendre(2);
-    Gauss g;
-    g.n = 2;
-    for (int i = 0; i < 2; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
-    return g;
-  }();
-  static const Gauss g3 = [] {
-    const Rule1D r = gauss_legendre(3);
-    Gauss g;
-    g.n = 3;
-    for (int i = 0; i < 3; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
-    return g;
-  }();
+  static const Gauss g2 = make_gauss(2), g3 = make_gauss(3);
   return n == 2 ? g2 : g3;
 }
 

@@ -17,6 +17,7 @@
 #include <numbers>
 #include <string>
 
+#include "mesh_area.h"
 #include "scene/load_scene.h"
 #include "shell3d/forming/forming_driver.h"
 #include "shell3d/forming/forming_fields.h"
@@ -30,12 +31,7 @@
 namespace vs::shell3d {
 namespace {
 
-double total_area(const ShellMesh& mesh) {
-  ShellModel model(mesh);
-  double a = 0.0;
-  for (int e = 0; e < mesh.num_elements(); ++e) a += shell9_area(model.element_geometry(e));
-  return a;
-}
+using test::total_area;
 
 double min_node_distance(const ShellMesh& mesh) {
   double d = std::numeric_limits<double>::infinity();

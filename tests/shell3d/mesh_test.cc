@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <numbers>
 
+#include "mesh_area.h"
 #include "shell3d/mesh_generators.h"
 #include "shell3d/shell9.h"
 #include "shell3d/shell_model.h"
@@ -11,12 +12,7 @@
 namespace vs::shell3d {
 namespace {
 
-double total_area(const ShellMesh& mesh) {
-  ShellModel model(mesh);
-  double a = 0.0;
-  for (int e = 0; e < mesh.num_elements(); ++e) a += shell9_area(model.element_geometry(e));
-  return a;
-}
+using test::total_area;
 
 TEST(MeshGenerators, QuarterDiscAreaSetsAndOrientation) {
   const double r = 50.0;
