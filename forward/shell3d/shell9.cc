@@ -327,62 +327,49 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int fl
   return p;
 }
 
-// Per-thread scratch: the kernel allocates nothing after the first element of a given size.
+// Per-thread scratch: the kernels allocate nothing after the first element of a given size.
 struct Workspace {
   Mitc9Tying tying;
   CovPoly assumed;
-  Eigen::MatrixXd L, DL;  // stacked point operators B_p and (dV D_p) B_p, one row per strain
+  Eigen::MatrixXd DL;         // (dV D_p) B_p, one row per strain row of L
+  Eigen::VectorXd rate, gen;  // L q and the row forces (dV times stresses)
+  Shell9Operators ops;        // shell9_evaluate(g, ...)
 };
+
+Workspace& workspace() {
+  thread_local Workspace ws;
+  return ws;
+}
 
 }  // namespace
 
-void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
-                     const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
-                     Shell9Stiffness kind, Shell9Output* out, double tangent_weight) {
-  thread_local Workspace ws;
+void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                      Shell9Operators* ops) {
+  Workspace& ws = workspace();
   const int n = g.ndof();
-  assert(q.size() == n && n <= kMaxDof);
-  const bool want_k = kind != Shell9Stiffness::kNone;
-  out->force.setZero(n);
-  out->potential = 0.0;
-
+  assert(n <= kMaxDof);
   const Gauss& mr = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
   const bool separate_shear = rule == Shell9Rule::kSelective;
   const bool mitc = rule == Shell9Rule::kMitc9;
   const int nt = static_cast<int>(thick.zeta.size());
   const int nip = mr.n * mr.n;
-  out->point_rate.assign(static_cast<std::size_t>(nip * nt), 0.0);
-  out->resultant.assign(static_cast<std::size_t>(nip), Shell9Resultant{});
   const Gauss& sr = gauss(separate_shear ? 2 : mr.n);
-  out->shear_force.assign(static_cast<std::size_t>(sr.n * sr.n), Eigen::Vector2d::Zero());
-  const double Gs = mat.shear_correction * mat.shear_reference();
-
-  // Stiffness: K = sum_p B_p^T (dV D_p) B_p over all strain rows of all points, as one product
-  // of the stacked operators (a rank-R update of the lower triangle; R = 5 per flow point).
+  ops->ndof = n;
+  ops->inplane_points = nip;
+  ops->shear_points = sr.n * sr.n;
+  // Rows: per flow point its 3 in-plane rows (and, without a separate shear rule, its 2 shear
+  // rows); the selective rule's shear rows follow, 2 per shear point and thickness point.
+  const int R = separate_shear ? 3 * nip * nt + 2 * sr.n * sr.n * nt : 5 * nip * nt;
+  ops->L.resize(R, n);
+  ops->flow.clear();
+  ops->shear.clear();
+  ops->frame.assign(static_cast<std::size_t>(nip), Mat3::Identity());
   int rows = 0;
-  if (want_k) {
-    const int R = separate_shear ? 3 * nip * nt + 2 * sr.n * sr.n * nt : 5 * nip * nt;
-    if (ws.L.rows() != R || ws.L.cols() != n) {
-      ws.L.resize(R, n);
-      ws.DL.resize(R, n);
-    }
-  }
-  VecD qv = q;
-
-  // Transverse shear rows at one point: Q = Gs gamma (penalty viscosity / elastic k G).
-  auto add_shear = [&](const Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxDof>& Bs, double dV,
-                       double h_weight, int sp) {
-    const Eigen::Vector2d gam = Bs * qv;
-    out->force.noalias() += (Gs * dV) * (Bs.transpose() * gam);
-    if (want_k) {
-      ws.L.middleRows(rows, 2) = Bs;
-      ws.DL.middleRows(rows, 2) = (Gs * dV) * Bs;
-      rows += 2;
-    }
-    out->potential += 0.5 * Gs * gam.squaredNorm() * dV;
-    out->shear_force[static_cast<std::size_t>(sp)] += (Gs * h_weight) * gam;
+  auto add_shear = [&](const auto& Bs, double dV, double h_weight, int point) {
+    ops->L.middleRows(rows, 2) = Bs;
+    ops->shear.push_back({rows, point, dV, h_weight});
+    rows += 2;
   };
-
   if (mitc) mitc9_tying_poly(g, n, &ws.assumed, &ws.tying);
   int ip = 0;
   for (int j = 0; j < mr.n; ++j) {
@@ -396,7 +383,6 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
         covariant_poly(g, sh, sp, n, &ws.assumed);
       }
       const CovPoly& A = ws.assumed;
-      Shell9Resultant& R = out->resultant[static_cast<std::size_t>(ip)];
       for (int k = 0; k < nt; ++k) {
         const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
         const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
@@ -404,24 +390,13 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
         const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
         const BMat Bl = b.T * Bcov;
         const double dV = b.detJ * mr.w[i] * mr.w[j] * wt;
-        const auto Bm = Bl.topRows<3>();
-        const Vec3 d = Bm * qv;
-        const int flow = ip * nt + k;
-        const PointLaw p = evaluate_point(mat, state, flow, d, kind, tangent_weight);
-        out->point_rate[static_cast<std::size_t>(flow)] = p.rate;
-        out->force.noalias() += dV * (Bm.transpose() * p.stress);
-        if (want_k) {
-          ws.L.middleRows(rows, 3) = Bm;
-          ws.DL.middleRows(rows, 3).noalias() = (dV * p.D) * Bm;
-          rows += 3;
-        }
-        out->potential += p.potential * dV;
         // Resultants per unit length: dz = h/2 dt, z = t h/2 (weights of [-1, 1] halved).
         const double dz = 0.5 * sp.h * wt;
-        R.N += dz * p.stress;
-        R.M += (dz * 0.5 * t * sp.h) * p.stress;
-        if (k == nt / 2) R.frame = b.frame;  // the middle thickness point (or nearest above)
-        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, 0.5 * sp.h * wt, ip);
+        ops->L.middleRows(rows, 3) = Bl.topRows<3>();
+        ops->flow.push_back({rows, ip, dV, dz, dz * 0.5 * t * sp.h});
+        rows += 3;
+        if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
+        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
       }
     }
   }
@@ -445,32 +420,86 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
       }
     }
   }
-
-  if (want_k) {
-    // Lower triangle by one triangular product (Eigen's blocked kernel), then mirrored.
-    out->stiffness.setZero(n, n);
-    out->stiffness.triangularView<Eigen::Lower>() +=
-        ws.L.topRows(rows).transpose() * ws.DL.topRows(rows);
-    out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
-  }
-
+  assert(rows == R);
   // Drilling: 1/2 k (V3 . omega)^2 at 6-dof nodes (section 6.3: a small artificial in-plane
   // rotational stiffness); numerics.md 4.2 suggests 1e-3..1e-4 mu h A_e.
+  ops->drill.clear();
   bool any_drill = false;
   for (int a = 0; a < 9; ++a) any_drill = any_drill || g.n_rot[a] == 3;
   if (any_drill) {
     const double area = shell9_area(g);
     for (int a = 0; a < 9; ++a) {
       if (g.n_rot[a] != 3) continue;
-      const double kd = mat.drill_scale * mat.shear_reference() * g.thickness[a] * area / 9.0;
-      const int o = g.offset(a) + 3;
-      const Vec3& v3 = g.director[a];
-      const double w = v3.dot(q.segment<3>(o));
-      out->force.segment<3>(o) += kd * w * v3;
-      if (want_k) out->stiffness.block<3, 3>(o, o) += kd * v3 * v3.transpose();
-      out->potential += 0.5 * kd * w * w;
+      ops->drill.push_back({g.offset(a) + 3, g.director[a], g.thickness[a] * area / 9.0});
     }
   }
+}
+
+void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
+                     const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
+                     Shell9Output* out, double tangent_weight) {
+  Workspace& ws = workspace();
+  const int n = ops.ndof;
+  assert(q.size() == n);
+  const bool want_k = kind != Shell9Stiffness::kNone;
+  const auto R = ops.L.rows();
+  const double Gs = mat.shear_correction * mat.shear_reference();
+  out->point_rate.assign(ops.flow.size(), 0.0);
+  out->resultant.assign(static_cast<std::size_t>(ops.inplane_points), Shell9Resultant{});
+  out->shear_force.assign(static_cast<std::size_t>(ops.shear_points), Eigen::Vector2d::Zero());
+  out->potential = 0.0;
+  ws.rate.noalias() = ops.L * q;
+  ws.gen.resize(R);
+  if (want_k) ws.DL.resize(R, n);
+  for (std::size_t f = 0; f < ops.flow.size(); ++f) {
+    const Shell9Operators::FlowRow& fr = ops.flow[f];
+    const Vec3 d = ws.rate.segment<3>(fr.row);
+    const PointLaw p = evaluate_point(mat, state, static_cast<int>(f), d, kind, tangent_weight);
+    out->point_rate[f] = p.rate;
+    ws.gen.segment<3>(fr.row) = fr.dV * p.stress;
+    if (want_k) ws.DL.middleRows(fr.row, 3).noalias() = (fr.dV * p.D) * ops.L.middleRows(fr.row, 3);
+    out->potential += p.potential * fr.dV;
+    Shell9Resultant& res = out->resultant[static_cast<std::size_t>(fr.point)];
+    res.N += fr.dz * p.stress;
+    res.M += fr.arm * p.stress;
+  }
+  for (int ip = 0; ip < ops.inplane_points; ++ip) {
+    out->resultant[static_cast<std::size_t>(ip)].frame = ops.frame[static_cast<std::size_t>(ip)];
+  }
+  // Transverse shear rows: Q = Gs gamma (penalty viscosity / elastic k G).
+  for (const Shell9Operators::ShearRow& sh : ops.shear) {
+    const Eigen::Vector2d gam = ws.rate.segment<2>(sh.row);
+    ws.gen.segment<2>(sh.row) = (Gs * sh.dV) * gam;
+    if (want_k) ws.DL.middleRows(sh.row, 2) = (Gs * sh.dV) * ops.L.middleRows(sh.row, 2);
+    out->potential += 0.5 * Gs * gam.squaredNorm() * sh.dV;
+    out->shear_force[static_cast<std::size_t>(sh.point)] += (Gs * sh.dz) * gam;
+  }
+  out->force.noalias() = ops.L.transpose() * ws.gen;
+  if (want_k) {
+    // K = sum_p B_p^T (dV D_p) B_p over all strain rows of all points, as one product of the
+    // stacked operators: the lower triangle by one triangular product (Eigen's blocked kernel),
+    // then mirrored.
+    out->stiffness.setZero(n, n);
+    out->stiffness.triangularView<Eigen::Lower>() += ops.L.transpose() * ws.DL;
+    out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
+  }
+  for (const Shell9Operators::DrillNode& dn : ops.drill) {
+    const double kd = mat.drill_scale * mat.shear_reference() * dn.thickness_area;
+    const double w = dn.director.dot(q.segment<3>(dn.offset));
+    out->force.segment<3>(dn.offset) += kd * w * dn.director;
+    if (want_k)
+      out->stiffness.block<3, 3>(dn.offset, dn.offset) +=
+          kd * dn.director * dn.director.transpose();
+    out->potential += 0.5 * kd * w * w;
+  }
+}
+
+void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                     const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
+                     Shell9Stiffness kind, Shell9Output* out, double tangent_weight) {
+  Shell9Operators& ops = workspace().ops;
+  shell9_operators(g, rule, thick, &ops);
+  shell9_evaluate(ops, mat, state, q, kind, out, tangent_weight);
 }
 
 }  // namespace vs::shell3d

@@ -63,6 +63,7 @@ struct NonlinearSummary {
   int iterations = 0;
   int newton_steps = 0;
   int picard_steps = 0;
+  int chord_steps = 0;  // 3D solver: steps on an earlier Newton factorisation
   double update_norm = 0.0;
   double residual_norm = 0.0;
   // Largest BlockTridiag::condition_estimate() of the matrices factorised in this solve (a

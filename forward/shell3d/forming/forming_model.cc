@@ -205,7 +205,13 @@ void FormingModel::prepare(const FormingState& s) {
   v2_.resize(nn);
   mask_.assign(num_dofs(), 0);
   value_.assign(num_dofs(), 0.0);
-  dual_count_ = 0;  // a new solve: its first tangent is the secant matrix
+  // A new solve: its first tangent is linearised about the last record of the previous one
+  // (warm start of the primal-dual tangent; shell9.h): the configurations are a step apart and
+  // the flow directions nearly the same, so the first iteration is a Newton step instead of a
+  // direct iteration. Measured on ex4a (n = 4, friction 0.2, 10 mm, speed setting, with the
+  // chord steps of sparse_nonlinear.cc): 391 -> 312 factorisations, the same answers. The very
+  // first solve has no record: its first tangent is the secant matrix.
+  dual_count_ = std::min(dual_count_, 1);
   auto fix = [&](int node, int k, double v) { prescribe(node, k, v); };
   for (int i = 0; i < nn; ++i) {
     const Vec3& x = s.x[i];
@@ -240,6 +246,15 @@ void FormingModel::prepare(const FormingState& s) {
       const int last = scene_.blank.edge == EdgeCondition::kClamped ? 5 : 3;
       for (int k = 0; k < last; ++k) fix(i, k, 0.0);
     }
+  }
+  // The configuration is fixed until the next prepare(): the element operators are built once
+  // here instead of in every evaluation of the solve (each element independently, so the result
+  // does not depend on the thread count).
+  const int ne = num_elements();
+  operators_.resize(static_cast<std::size_t>(ne));
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int e = 0; e < ne; ++e) {
+    shell9_operators(geometry(s, e), rule_, thick_, &operators_[static_cast<std::size_t>(e)]);
   }
 }
 
@@ -357,12 +372,11 @@ std::vector<double> FormingModel::area_stretch(const std::vector<Vec3>& x) const
   return sum;
 }
 
-void FormingModel::element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe,
+void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen::VectorXd& qe,
                                   Shell9Stiffness kind, double theta, ElementContribution* c) {
   // Element dofs are 5 per node with the velocities in the nodal frames Q_a: the element takes
   // the frames into its operator (B Q_a per node), so forces and the matrix K_local = T^T K T,
   // T = diag(Q_a, I2), come out in the nodal frames directly.
-  const Shell9Geometry g = geometry(s, e);
   const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
   const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
   Shell9State st;
@@ -374,7 +388,7 @@ void FormingModel::element_kernel(const FormingState& s, int e, const Eigen::Vec
     if (dual_mode_ == DualMode::kGiven) st.dual_given = dual_given_.data() + fp;
   }
   thread_local Shell9Output out;
-  shell9_evaluate(g, rule_, thick_, mat, st, qe, kind, &out, theta);
+  shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, qe, kind, &out, theta);
   c->force.swap(out.force);
   if (kind != Shell9Stiffness::kNone) c->stiffness.swap(out.stiffness);
   c->potential = out.potential;
@@ -390,8 +404,30 @@ double FormingModel::friction_limit(const NodeContact3& c) const {
 }
 
 void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix,
-                            double theta, Shell9Stiffness kind, FormingSystem* out) {
+                            double theta, Shell9Stiffness kind, bool replace, FormingSystem* out) {
   SparseMatrix& K = assembler_->matrix();
+  // Matrix entries only at free dofs: apply_constraints() decouples the prescribed ones, and a
+  // decoupled row's diagonal does not affect the solution (its residual is zero).
+  auto add = [&](const FrictionTerm& t, double sign) {
+    for (int p = 0; p < 2; ++p) {
+      if (mask_[static_cast<std::size_t>(t.dof + p)]) continue;
+      out->residual(t.dof + p) += sign * t.force(p);
+      if (!want_matrix) continue;
+      for (int q = 0; q < 2; ++q) {
+        if (!mask_[static_cast<std::size_t>(t.dof + q)]) {
+          K.coeffRef(t.dof + p, t.dof + q) += sign * t.stiffness(p, q);
+        }
+      }
+    }
+    out->potential += sign * t.potential;
+  };
+  if (replace) {
+    for (const FrictionTerm& t : friction_terms_) add(t, -1.0);
+  }
+  friction_terms_.clear();
+  friction_matrix_ = want_matrix;
+  friction_theta_ = theta;
+  friction_kind_ = kind;
   const double v0 = friction_velocity_;
   for (int i = 0; i < num_nodes(); ++i) {
     const NodeContact3& c = s.contact[i];
@@ -402,23 +438,30 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     if (limit == 0.0) continue;
     const Mat3& Q = frame_[i];
     const Vec3 w(0.0, 0.0, tool.velocity().y());
-    const int d = model_->dof(i, 0);
-    const Eigen::Vector2d slip(x(d) - w.dot(Q.col(0)), x(d + 1) - w.dot(Q.col(1)));
+    FrictionTerm t;
+    t.dof = model_->dof(i, 0);
+    const Eigen::Vector2d slip(x(t.dof) - w.dot(Q.col(0)), x(t.dof + 1) - w.dot(Q.col(1)));
     const double v = slip.norm(), a = v / v0, at = std::atan(a);
     const double f = limit * kTwoOverPi * at;
     const double ks = a < 1e-8 ? limit * kTwoOverPi / v0 : f / v;
     const double kt = limit * kTwoOverPi / (v0 * (1.0 + a * a));
-    out->residual.segment<2>(d) += ks * slip;
-    out->potential += limit * kTwoOverPi * (v * at - 0.5 * v0 * std::log1p(a * a));
-    if (!want_matrix) continue;
-    Eigen::Matrix2d k2 = ks * Eigen::Matrix2d::Identity();
-    if (kind == Shell9Stiffness::kTangent && v > 0.0) {
-      const Eigen::Vector2d e = slip / v;
-      k2 += theta * (kt - ks) * e * e.transpose();
+    t.force = ks * slip;
+    t.potential = limit * kTwoOverPi * (v * at - 0.5 * v0 * std::log1p(a * a));
+    if (want_matrix) {
+      t.stiffness = ks * Eigen::Matrix2d::Identity();
+      if (kind == Shell9Stiffness::kTangent && v > 0.0) {
+        const Eigen::Vector2d e = slip / v;
+        t.stiffness += theta * (kt - ks) * e * e.transpose();
+      }
     }
-    for (int p = 0; p < 2; ++p)
-      for (int q = 0; q < 2; ++q) K.coeffRef(d + p, d + q) += k2(p, q);
+    add(t, 1.0);
+    friction_terms_.push_back(t);
   }
+}
+
+void FormingModel::refresh_friction(const FormingState& s, const Eigen::VectorXd& x,
+                                    FormingSystem* out) {
+  friction(s, x, friction_matrix_, friction_theta_, friction_kind_, true, out);
 }
 
 void FormingModel::holder_loads(const FormingState& s, const Eigen::VectorXd& x,
@@ -498,9 +541,9 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
   if (dual) dual_finish(x);
   holder_loads(s, x, out);
   out->residual = out->internal_force - out->external_force;
-  friction(s, x, want, theta, kind, out);
   for (int k = 0; k < num_dofs(); ++k)
     if (mask_[k]) out->residual(k) = 0.0;
+  friction(s, x, want, theta, kind, false, out);
   if (want) {
     Eigen::VectorXd dummy = Eigen::VectorXd::Zero(num_dofs());
     const std::vector<double> zero(static_cast<std::size_t>(num_dofs()), 0.0);
@@ -509,18 +552,26 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
 }
 
 double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) {
+  // Keeps the friction record of the last evaluate() (refresh_friction).
+  std::vector<FrictionTerm> terms = std::move(friction_terms_);
+  const bool matrix = friction_matrix_;
+  const double theta = friction_theta_;
+  const Shell9Stiffness kind = friction_kind_;
   FormingSystem sys;
   evaluate(s, x, Shell9Stiffness::kNone, 0.0, &sys);
+  friction_terms_ = std::move(terms);
+  friction_matrix_ = matrix;
+  friction_theta_ = theta;
+  friction_kind_ = kind;
   return sys.potential;
 }
 
-void FormingModel::point_rates(const FormingState& s, const Eigen::VectorXd& x,
+void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd& x,
                                std::vector<std::vector<double>>* rates) const {
   const int ne = num_elements();
   rates->assign(ne, {});
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
-    const Shell9Geometry g = geometry(s, e);
     const Eigen::VectorXd q = assembler_->gather(e, x);
     const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
     const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
@@ -528,7 +579,8 @@ void FormingModel::point_rates(const FormingState& s, const Eigen::VectorXd& x,
     st.sigma_y = sigma_y_.data() + fp;
     st.hardening_viscosity = hardening_viscosity_.data() + fp;
     Shell9Output out;
-    shell9_evaluate(g, rule_, thick_, mat, st, q, Shell9Stiffness::kNone, &out);
+    shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
+                    &out);
     (*rates)[e] = std::move(out.point_rate);
   }
 }

@@ -114,7 +114,9 @@ class FormingModel {
   // Per-step material data (as AxisymModel::freeze_material): yield stress and hardening
   // viscosity theta H dt per flow point, shear penalty viscosity per element.
   void freeze_material(const FormingState& s, double dt_predicted);
-  // Nodal frames, director frames and prescribed values of state s; call before evaluate().
+  // Nodal frames, director frames, prescribed values and the element operators
+  // (shell9_operators) of state s; call before evaluate(), potential() and point_rates(), which
+  // then evaluate state s (their s argument must be the prepared state).
   void prepare(const FormingState& s);
 
   // Translational frame Q of a node (global = Q local) and its director axes V1, V2.
@@ -139,6 +141,11 @@ class FormingModel {
   void evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind, double theta,
                 FormingSystem* out);
   double potential(const FormingState& s, const Eigen::VectorXd& x);
+  // After the lagged normal forces in s changed (FormingStepProblem::update_lagged): replaces the
+  // Coulomb friction terms of the last evaluate(), which must have been at this x with this s,
+  // in its residual, potential and matrix. The element terms do not depend on the normal forces,
+  // so this equals a new evaluate() at a fraction of its cost (nodal terms only), up to round-off.
+  void refresh_friction(const FormingState& s, const Eigen::VectorXd& x, FormingSystem* out);
   const SparseMatrix& matrix() const { return assembler_->matrix(); }
 
   // Effective rate at every flow point (per element) at local velocities x.
@@ -171,8 +178,10 @@ class FormingModel {
  private:
   void element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe, Shell9Stiffness kind,
                       double theta, ElementContribution* c);
+  // Adds the Coulomb friction terms at x to out (residual, potential, matrix if want_matrix) and
+  // records them in friction_terms_; with `replace`, first removes the recorded ones.
   void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
-                Shell9Stiffness kind, FormingSystem* out);
+                Shell9Stiffness kind, bool replace, FormingSystem* out);
   // Prescribed value v of local dof k of a node (prepare()).
   void prescribe(int node, int k, double v);
   // Prescribes the dofs of node i that remove the rigid-body modes: the symmetry planes of the
@@ -207,7 +216,19 @@ class FormingModel {
   // Frozen per step.
   std::vector<double> sigma_y_, hardening_viscosity_;  // per element * flow point
   std::vector<double> shear_viscosity_;                // per element
+  // The friction terms of the last evaluate() (refresh_friction), per node in contact.
+  struct FrictionTerm {
+    int dof = 0;  // first tangential dof
+    Eigen::Vector2d force = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
+    double potential = 0.0;
+  };
+  std::vector<FrictionTerm> friction_terms_;
+  bool friction_matrix_ = false;
+  double friction_theta_ = 0.0;
+  Shell9Stiffness friction_kind_ = Shell9Stiffness::kNone;
   // Per prepare().
+  std::vector<Shell9Operators> operators_;  // per element
   std::vector<Mat3> frame_;
   std::vector<Vec3> v1_, v2_;
   std::vector<char> mask_;

@@ -13,6 +13,14 @@ double FormingStepProblem::evaluate(const Eigen::VectorXd& x, double theta,
   return sys_.internal_force.norm();
 }
 
+double FormingStepProblem::evaluate_residual(const Eigen::VectorXd& x, Eigen::VectorXd* residual,
+                                             double* potential) {
+  model_.evaluate(*state_, x, Shell9Stiffness::kNone, 0.0, &sys_);
+  *residual = sys_.residual;
+  *potential = sys_.potential;
+  return sys_.internal_force.norm();
+}
+
 void FormingStepProblem::reactions(const Eigen::VectorXd& f, std::vector<double>* normal,
                                    std::vector<double>* magnitude) const {
   const int nn = model_.num_nodes();
@@ -52,6 +60,14 @@ bool FormingStepProblem::update_lagged(const Eigen::VectorXd& /*x*/) {
     last_change_[i] = change;
     c.normal_force_N += relax_[i] * change;
   }
+  return true;
+}
+
+bool FormingStepProblem::refresh(const Eigen::VectorXd& x, Eigen::VectorXd* residual,
+                                 double* potential) {
+  model_.refresh_friction(*state_, x, &sys_);
+  *residual = sys_.residual;
+  *potential = sys_.potential;
   return true;
 }
 

@@ -19,10 +19,13 @@ class FormingStepProblem : public SparseNonlinearProblem {
 
   double evaluate(const Eigen::VectorXd& x, double theta, Eigen::VectorXd* residual,
                   double* potential) override;
+  double evaluate_residual(const Eigen::VectorXd& x, Eigen::VectorXd* residual,
+                           double* potential) override;
   const SparseMatrix& matrix() const override { return model_.matrix(); }
   double potential(const Eigen::VectorXd& x) override { return model_.potential(*state_, x); }
   bool update_lagged(const Eigen::VectorXd& x) override;
-
+  // The normal forces enter only the nodal friction terms (FormingModel::refresh_friction).
+  bool refresh(const Eigen::VectorXd& x, Eigen::VectorXd* residual, double* potential) override;
   // Start vector: the state's last velocities in the current frames, prescribed values imposed.
   Eigen::VectorXd start() const;
   // Final evaluation at the converged x: reactions, punch force and flow-point rates.

@@ -27,11 +27,21 @@ class SparseNonlinearProblem {
   // (norm of the internal forces); *potential = flow potential at x.
   virtual double evaluate(const Eigen::VectorXd& x, double theta, Eigen::VectorXd* residual,
                           double* potential) = 0;
+  // Residual and potential only (matrix() unchanged); returns the residual scale.
+  virtual double evaluate_residual(const Eigen::VectorXd& x, Eigen::VectorXd* residual,
+                                   double* potential) = 0;
   virtual const SparseMatrix& matrix() const = 0;
   virtual double potential(const Eigen::VectorXd& x) = 0;
   // After each accepted iterate: quantities lagged by one iteration (contact normal forces).
   // Returns whether the system at a given x changed (an evaluation made before is stale).
   virtual bool update_lagged(const Eigen::VectorXd& x) = 0;
+  // After update_lagged() changed the system: brings the last evaluate(), made at this x, up to
+  // date in place (residual, potential and matrix) if the problem can do that more cheaply than
+  // a new evaluation; returns false if it cannot (the solver then evaluates again).
+  virtual bool refresh(const Eigen::VectorXd& /*x*/, Eigen::VectorXd* /*residual*/,
+                       double* /*potential*/) {
+    return false;
+  }
 };
 
 struct SparseSolveTimings {
@@ -41,8 +51,11 @@ struct SparseSolveTimings {
 };
 
 // x: start (prescribed values already set); on return, the last iterate. Timings accumulate.
+// reuse_factorisation: the solver's factorisation (of an earlier solve) fits this problem's
+// unknowns and constraints; the solve then starts with chord steps on it.
 NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
                                         const NonlinearOptions& options, SparseSpdSolver* solver,
-                                        Eigen::VectorXd* x, SparseSolveTimings* timings);
+                                        Eigen::VectorXd* x, SparseSolveTimings* timings,
+                                        bool reuse_factorisation = false);
 
 }  // namespace vs::shell3d
