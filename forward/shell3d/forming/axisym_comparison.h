@@ -14,8 +14,8 @@ namespace vs::shell3d {
 
 // The same scene as an axisymmetric one with `elements` meridian elements (uniform grading).
 // Requires a circular blank. Its numerics.max_travel_increment_per_length is at most the default
-// (0.025): the reference is run at the axisymmetric stability cap even when the 3D scene relaxes
-// the key to save 3D steps.
+// (0.025) and its numerics.strain_rate_cutoff at most the default (1e-4): the reference is run
+// at the axisymmetric stability cap and cut-off even when the 3D scene relaxes them to save time.
 Scene axisymmetric_twin(const Scene& shell3d_scene, int elements);
 
 struct TravelComparison {
@@ -36,6 +36,9 @@ struct TravelComparison {
   double eps_thickness_deviation_x0 = 0.0;
   double eps_thickness_deviation_diagonal = 0.0;
   double max_eps_thickness_deviation() const;
+  // Largest |eps_t| of the axisymmetric profile (the scale of a relative thickness-strain
+  // deviation).
+  double max_abs_eps_thickness_axisym = 0.0;
 };
 
 // One entry per travel of scene.process.output_travels_mm that both runs reached.

@@ -10,6 +10,12 @@
 // the next iteration) instead of a potential-only one, so an accepted full step costs one
 // assembly instead of two; backtracking uses potential-only evaluations; a step that already
 // passes the convergence test ends the solve without evaluating its end point.
+// Chord steps: once a Newton update is below 3e-2 of |x|, the following iterations reuse its
+// factorisation with residual-only evaluations (no element matrices, no factorisation) while
+// each update shrinks to at most half the previous one and passes the Armijo test; otherwise
+// Newton resumes at the same x. A solve may also start with chord steps on the factorisation of
+// an earlier solve (reuse_factorisation). After a lagged update (update_lagged) the evaluation in
+// hand is brought up to date by refresh() when the problem can, instead of a new one.
 #pragma once
 
 #include <Eigen/Core>
