@@ -169,5 +169,43 @@ TEST(Forming3d, NodalFramesAndPrescribedDofs) {
   EXPECT_LT((model.frame(inner) * local - Eigen::Vector3d(0.0, 0.0, 1.0)).norm(), 1e-14);
 }
 
+// The lagged normal forces enter only the nodal Coulomb terms, so after they change the solver
+// refreshes the evaluation it holds (FormingModel::refresh_friction) instead of assembling again:
+// residual, potential and matrix must equal a new evaluation at the same velocities.
+TEST(Forming3d, FrictionRefreshEqualsANewEvaluation) {
+  Scene s = example_4a();
+  s.blank.divisions = 2;
+  s.tools.at(0).friction = 0.2;
+  FormingModel model(s);
+  FormingState st = model.initial_state();
+  int touching = 0;
+  for (int i = 0; i < model.num_nodes(); ++i) {
+    if (st.x[i].head<2>().norm() > 25.0) continue;
+    st.contact[i].tool = model.punch_index();
+    st.contact[i].normal_force_N = 10.0 + i;
+    ++touching;
+  }
+  ASSERT_GT(touching, 3);
+  model.freeze_material(st, 0.1);
+  model.prepare(st);
+  Eigen::VectorXd x(model.num_dofs());
+  for (Eigen::Index k = 0; k < x.size(); ++k) x(k) = 0.3 * std::sin(1.7 * static_cast<double>(k));
+  FormingSystem refreshed, fresh;
+  model.evaluate(st, x, Shell9Stiffness::kTangent, 1.0, &refreshed);
+  for (NodeContact3& c : st.contact) c.normal_force_N *= 1.7;
+  model.refresh_friction(st, x, &refreshed);
+  const SparseMatrix K_refreshed = model.matrix();
+  model.evaluate(st, x, Shell9Stiffness::kTangent, 1.0, &fresh);
+  const double scale = fresh.residual.norm();
+  EXPECT_LT((refreshed.residual - fresh.residual).norm(), 1e-12 * scale);
+  EXPECT_NEAR(refreshed.potential, fresh.potential, 1e-12 * std::abs(fresh.potential));
+  EXPECT_LT((K_refreshed - model.matrix()).norm(), 1e-12 * model.matrix().norm());
+  // The friction terms did change: the refresh is not a no-op.
+  FormingSystem before;
+  for (NodeContact3& c : st.contact) c.normal_force_N /= 1.7;
+  model.evaluate(st, x, Shell9Stiffness::kTangent, 1.0, &before);
+  EXPECT_GT((before.residual - fresh.residual).norm(), 1e-6 * scale);
+}
+
 }  // namespace
 }  // namespace vs::shell3d
