@@ -133,10 +133,11 @@ class FormingModel {
 
   // Residual, potential and (kind != kNone) matrix at local velocities x. kTangent blends secant
   // and tangent with theta; its rank-one part uses the primal-dual flow directions (shell9.h,
-  // Shell9FlowDirection) from the previous kTangent evaluations since prepare() (dual_prepare():
-  // linearised about the last one, or its damped step; none: the first tangent of a solve is the
-  // secant matrix, so Newton solves start without direct iterations). Only the matrix depends on
-  // that history, never the residual or the potential.
+  // Shell9FlowDirection) from the previous kTangent evaluations (dual_prepare(): linearised about
+  // the last one, or its damped step; after prepare() about the last one of the previous solve;
+  // none: the first tangent of the model's life is the secant matrix, so Newton solves start
+  // without direct iterations). Only the matrix depends on that history, never the residual or
+  // the potential.
   // The matrix has prescribed rows and columns decoupled (diagonal kept).
   void evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind, double theta,
                 FormingSystem* out);

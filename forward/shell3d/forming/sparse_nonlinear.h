@@ -3,7 +3,7 @@
 // explains: Newton with the tangent weight theta adapted like a trust region and an Armijo line
 // search on the convex flow potential; a rejected step falls back to the always-SPD direct
 // iteration). The problem's tangent is taken to be self-starting (the forming model's primal-dual
-// tangent, forming_model.h: its first matrix in a solve is the direct iteration's), so every solve
+// tangent, forming_model.h: its first matrix in a run is the direct iteration's), so every solve
 // starts at weight 1 without direct iterations. The matrix lives in the problem; the sparse
 // symbolic analysis is done once per solver object (the pattern never changes).
 // Differences: the full Newton step is tried with a complete evaluation (residual and matrix for
