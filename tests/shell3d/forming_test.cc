@@ -50,8 +50,7 @@ constexpr double kMeanForceTolerance = 0.025;
 constexpr double kForceTolerance = 0.035;
 constexpr double kThicknessStrainTolerance = 0.01;
 
-void expect_matches_axisymmetric(double friction) {
-  const Scene s = comparison_scene(friction);
+void expect_matches_axisymmetric(const Scene& s) {
   const Shell3dResult shell = simulate_shell3d(s);
   ASSERT_TRUE(shell.completed()) << shell.message;
   const RunResult axi = simulate(axisymmetric_twin(s, 30));
@@ -75,12 +74,30 @@ void expect_matches_axisymmetric(double friction) {
 }
 
 TEST(Forming3d, StickingMatchesAxisymmetricSolver) {
-  expect_matches_axisymmetric(std::numeric_limits<double>::infinity());
+  expect_matches_axisymmetric(comparison_scene(std::numeric_limits<double>::infinity()));
 }
 
-TEST(Forming3d, CoulombFrictionMatchesAxisymmetricSolver) { expect_matches_axisymmetric(0.2); }
+TEST(Forming3d, CoulombFrictionMatchesAxisymmetricSolver) {
+  expect_matches_axisymmetric(comparison_scene(0.2));
+}
 
-TEST(Forming3d, FrictionlessMatchesAxisymmetricSolver) { expect_matches_axisymmetric(0.0); }
+TEST(Forming3d, FrictionlessMatchesAxisymmetricSolver) {
+  expect_matches_axisymmetric(comparison_scene(0.0));
+}
+
+// The numerics of the performance goal (experiments/05_shell3d, "Performance goal": the
+// strain-rate cut-off 1e-2 and 0.035 element sizes per step) against the twin at its default
+// numerics, at 8-10 mm. Below ~5 mm the cut-off makes the force low (-8 % at 2 mm, -3.3 % at
+// 4 mm: the bending-dominated start flows at rates near the cut-off), which the README states.
+// Measured: largest |mean-force deviation| 0.26 %, force 0.33 %, thickness strain 0.0039.
+TEST(Forming3d, GoalNumericsMatchAxisymmetricSolver) {
+  Scene s = comparison_scene(0.2);
+  s.process.punch_travel_mm = 10.0;
+  s.process.output_travels_mm = {8.0, 9.0, 10.0};
+  s.numerics.max_travel_increment_per_length = 0.035;
+  s.numerics.strain_rate_cutoff = 1e-2;
+  expect_matches_axisymmetric(s);
+}
 
 // Nodal values of the quarter square blank mirrored about the diagonal: the mesh maps onto
 // itself under x <-> y, the model does not know it, so symmetry is a check of the assembly,
