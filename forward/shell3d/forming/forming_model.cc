@@ -422,12 +422,12 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     out->potential += sign * t.potential;
   };
   if (replace) {
-    for (const FrictionTerm& t : friction_terms_) add(t, -1.0);
+    for (const FrictionTerm& t : friction_.terms) add(t, -1.0);
   }
-  friction_terms_.clear();
-  friction_matrix_ = want_matrix;
-  friction_theta_ = theta;
-  friction_kind_ = kind;
+  friction_.terms.clear();
+  friction_.matrix = want_matrix;
+  friction_.theta = theta;
+  friction_.kind = kind;
   const double v0 = friction_velocity_;
   for (int i = 0; i < num_nodes(); ++i) {
     const NodeContact3& c = s.contact[i];
@@ -455,13 +455,13 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
       }
     }
     add(t, 1.0);
-    friction_terms_.push_back(t);
+    friction_.terms.push_back(t);
   }
 }
 
 void FormingModel::refresh_friction(const FormingState& s, const Eigen::VectorXd& x,
                                     FormingSystem* out) {
-  friction(s, x, friction_matrix_, friction_theta_, friction_kind_, true, out);
+  friction(s, x, friction_.matrix, friction_.theta, friction_.kind, true, out);
 }
 
 void FormingModel::holder_loads(const FormingState& s, const Eigen::VectorXd& x,
@@ -553,16 +553,10 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
 
 double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) {
   // Keeps the friction record of the last evaluate() (refresh_friction).
-  std::vector<FrictionTerm> terms = std::move(friction_terms_);
-  const bool matrix = friction_matrix_;
-  const double theta = friction_theta_;
-  const Shell9Stiffness kind = friction_kind_;
+  FrictionRecord kept = std::move(friction_);
   FormingSystem sys;
   evaluate(s, x, Shell9Stiffness::kNone, 0.0, &sys);
-  friction_terms_ = std::move(terms);
-  friction_matrix_ = matrix;
-  friction_theta_ = theta;
-  friction_kind_ = kind;
+  friction_ = std::move(kept);
   return sys.potential;
 }
 

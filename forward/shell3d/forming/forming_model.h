@@ -180,7 +180,7 @@ class FormingModel {
   void element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe, Shell9Stiffness kind,
                       double theta, ElementContribution* c);
   // Adds the Coulomb friction terms at x to out (residual, potential, matrix if want_matrix) and
-  // records them in friction_terms_; with `replace`, first removes the recorded ones.
+  // records them in friction_; with `replace`, first removes the recorded ones.
   void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
                 Shell9Stiffness kind, bool replace, FormingSystem* out);
   // Prescribed value v of local dof k of a node (prepare()).
@@ -224,10 +224,13 @@ class FormingModel {
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
     double potential = 0.0;
   };
-  std::vector<FrictionTerm> friction_terms_;
-  bool friction_matrix_ = false;
-  double friction_theta_ = 0.0;
-  Shell9Stiffness friction_kind_ = Shell9Stiffness::kNone;
+  struct FrictionRecord {
+    std::vector<FrictionTerm> terms;
+    bool matrix = false;  // the evaluation's arguments, for the refresh
+    double theta = 0.0;
+    Shell9Stiffness kind = Shell9Stiffness::kNone;
+  };
+  FrictionRecord friction_;
   // Per prepare().
   std::vector<Shell9Operators> operators_;  // per element
   std::vector<Mat3> frame_;

@@ -81,6 +81,21 @@ NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
   constexpr double kChordContraction = 0.5;
   bool chord = false;
   double last_update = 0.0;  // |dx| of the last accepted step
+  // After an accepted iterate: the lagged quantities (refreshing the evaluation in hand, if any)
+  // and the stopping test.
+  auto finish_iteration = [&](int it) {
+    if (problem.update_lagged(*x) && (have_eval || chord)) {
+      const auto t0 = Clock::now();
+      const bool fresh = problem.refresh(*x, &r, &p0);
+      have_eval = have_eval && fresh;
+      chord = chord && fresh;
+      timings->assembly_s += since(t0);
+    }
+    if (!nonlinear_converged(options, sum, it)) return false;
+    sum.converged = true;
+    sum.message = fmt::format("converged in {} iterations", it);
+    return true;
+  };
   if (reuse_factorisation && solver->analyses() > 0) {
     eval_scale = evaluate_residual();
     chord = true;
@@ -120,16 +135,7 @@ NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
                        sum.residual_norm, 1.0);
         }
         chord = !final_step;
-        if (problem.update_lagged(*x) && chord) {
-          const auto t0 = Clock::now();
-          chord = problem.refresh(*x, &r, &p0);
-          timings->assembly_s += since(t0);
-        }
-        if (nonlinear_converged(options, sum, it)) {
-          sum.converged = true;
-          sum.message = fmt::format("converged in {} iterations", it);
-          return sum;
-        }
+        if (finish_iteration(it)) return sum;
         continue;
       }
       have_eval = false;  // a Newton iteration at the same x
@@ -216,18 +222,7 @@ NonlinearSummary solve_sparse_nonlinear(SparseNonlinearProblem& problem,
       std::fprintf(stderr, "    %4d  %.3f  %.3e   %.3e   %.3f\n", it, used_theta, sum.update_norm,
                    sum.residual_norm, alpha);
     }
-    if (problem.update_lagged(*x) && (have_eval || chord)) {
-      const auto t0 = Clock::now();
-      const bool fresh = problem.refresh(*x, &r, &p0);
-      have_eval = have_eval && fresh;
-      chord = chord && fresh;
-      timings->assembly_s += since(t0);
-    }
-    if (nonlinear_converged(options, sum, it)) {
-      sum.converged = true;
-      sum.message = fmt::format("converged in {} iterations", it);
-      return sum;
-    }
+    if (finish_iteration(it)) return sum;
   }
   sum.message = fmt::format("no convergence in {} iterations (|dx|/|x| = {:.2e}, |r|/|f| = {:.2e})",
                             options.max_iterations, sum.update_norm, sum.residual_norm);
