@@ -32,7 +32,7 @@ AxisymSystem& AxisymStepProblem::elements_at(const Eigen::VectorXd& x, Stiffness
   return slot.sys;
 }
 
-double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
+double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta,
                                    Eigen::VectorXd* residual, double* potential) {
   const StiffnessKind kind = theta > 0.0 ? StiffnessKind::kTangent : StiffnessKind::kSecant;
   AxisymSystem& sys = elements_at(x, kind, dual_, dual_id_, theta);
@@ -49,7 +49,7 @@ double AxisymStepProblem::evaluate(const Eigen::VectorXd& x, double theta, Block
     c.normal_force_N = model_.node_force(sys, i).dot(c.normal);
     relagged = true;
   }
-  std::swap(*K, sys.K);
+  std::swap(linear_.matrix(), sys.K);
   *residual = sys.residual;
   *potential = relagged ? model_.potential(*state_, x, sys) : sys.potential;
   return sys.element_force.norm();
@@ -146,7 +146,7 @@ void relaxed_update(double target, double* value, double* relax, double* last_ch
 
 }  // namespace
 
-void AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
+bool AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
   // Reactions of the iterate just evaluated (one iteration behind x), as in the paper's nodal
   // stick/slip check at the end of each iteration, each node's update relaxed.
   (void)x;
@@ -162,6 +162,7 @@ void AxisymStepProblem::update_lagged(const Eigen::VectorXd& x) {
     if (c.tool >= 0 && model_.consistent_friction(c)) continue;  // set by evaluate()
     relaxed_update(n[i], &c.normal_force_N, &relax_[i], &last_change_[i]);
   }
+  return true;  // the next evaluate() is a new one anyway (no full-step evaluation here)
 }
 
 void AxisymStepProblem::warm_start(const std::vector<double>& directions) {

@@ -5,22 +5,24 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "linalg/block_tridiag_solver.h"
 #include "material/flow_direction.h"
 #include "model/axisym_model.h"
-#include "solver/nonlinear_solver.h"
+#include "solver/newton.h"
 
 namespace vs {
 
-class AxisymStepProblem : public NonlinearProblem {
+class AxisymStepProblem : public NewtonProblem {
  public:
   AxisymStepProblem(const AxisymModel& model, AxisymState* state);
 
-  double evaluate(const Eigen::VectorXd& x, double theta, BlockTridiag* K,
-                  Eigen::VectorXd* residual, double* potential) override;
+  LinearSolver& linear_solver() override { return linear_; }
+  double evaluate(const Eigen::VectorXd& x, double theta, Eigen::VectorXd* residual,
+                  double* potential) override;
   void set_direction(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) override;
   double potential(const Eigen::VectorXd& x_trial, double alpha) override;
   void step_taken(double alpha) override;
-  void update_lagged(const Eigen::VectorXd& x) override;
+  bool update_lagged(const Eigen::VectorXd& x) override;
   bool self_starting() const override { return true; }
 
   // Start vector: previous velocity in the current frames, prescribed values imposed.
@@ -53,6 +55,7 @@ class AxisymStepProblem : public NonlinearProblem {
 
   const AxisymModel& model_;
   AxisymState* state_;
+  BlockTridiagSolver linear_;  // the matrix of the last evaluate() and its factorisation
   // Element sums for the last two velocities evaluated (the iterate and the line search's trial
   // point): an accepted trial point is not summed again by the next evaluate(), and the secant
   // fallback at a rejected Newton step reuses the iterate's sums.

@@ -13,11 +13,12 @@
 #include <functional>
 #include <vector>
 
+#include "linalg/sparse_matrix.h"
 #include "shell3d/shell_model.h"
 
 namespace vs::shell3d {
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using vs::SparseMatrix;
 
 struct ElementContribution {
   Eigen::VectorXd force;      // element dofs

@@ -9,14 +9,14 @@
 
 #include "shell3d/assembler.h"
 #include "shell3d/shell9.h"
-#include "shell3d/sparse_solver.h"
+#include "linalg/sparse_spd_solver.h"
 
 namespace vs::shell3d {
 
 struct LinearShellOptions {
   Shell9Rule rule = Shell9Rule::kMitc9;
   ThicknessRule thickness;  // empty = 2-point Gauss
-  SolverKind solver = SolverKind::kCholmodSupernodal;
+  SparseSolverKind solver = SparseSolverKind::kCholmodSupernodal;
 };
 
 class LinearShellProblem {

@@ -5,22 +5,18 @@
 // geometry update is Heun (or Euler) and a failed step is cut back and retried.
 #pragma once
 
-#include <functional>
-
+#include "run/run_options.h"
+#include "run/run_result.h"
 #include "scene/scene.h"
-#include "shell3d/forming/forming_result.h"
 
 namespace vs::shell3d {
 
-struct Shell3dRunOptions {
-  std::function<void(const StepRecord&)> on_step;  // after every converged step; may be empty
-  bool verbose = false;                            // nonlinear iteration tables on stderr
-};
-
 // Runs the scene to its punch travel or until it cannot continue; never throws for a solver
 // failure (Termination::kFailed, message, everything so far). Throws InputError for a scene it
-// does not build (not shell3d, blank holder, ...).
-Shell3dResult simulate_shell3d(const Scene& scene, const Shell3dRunOptions& options = {});
+// does not build (not shell3d, fixed-gap holder, ...). The result holds the nodal fields of the
+// output stages (RunResult::shell) and their line profiles (RunResult::profiles, shell_profiles
+// of forming_fields.h). vs::simulate() calls it for shell3d scenes.
+RunResult simulate_shell3d(const Scene& scene, const RunOptions& options = {});
 
 class FormingModel;
 // The element length of the per-length travel cap (numerics.max_travel_increment_per_length):

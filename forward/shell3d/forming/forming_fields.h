@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "shell3d/forming/forming_result.h"
+#include "run/run_result.h"
 
 namespace vs::shell3d {
 
@@ -37,6 +37,22 @@ struct LineProfile {
 
 LineProfile line_profile(const ShellMesh& mesh, const ShellStage& stage, const std::string& line,
                          double initial_thickness_mm);
+
+// The profiles of one stage in the RunResult form, one per line of the mesh in the order "x"
+// (node set y0), "y" (x0), "diagonal", then for a full blank "x_neg", "y_neg", "diagonal_neg".
+// Nodal values along the line from the centre: r0_mm, r_mm, z_mm, thickness_mm, eps_thickness,
+// contact (1 touching a tool); eps_meridional = ln(ds/ds0) of the line's arc length over the
+// two neighbouring intervals (one at the ends); eps_circumferential = ln(r/r0) (the hoop stretch
+// of the ring through the node; at the centre the meridional value, equal there by symmetry);
+// eps_effective = the mean of the elements around the node; node_r_mm/node_z_mm = r_mm/z_mm.
+// The forces of the axisymmetric profiles are left empty.
+std::vector<Profile> shell_profiles(const ShellMesh& mesh, const ShellStage& stage,
+                                    double initial_thickness_mm);
+
+// The profile line names of a mesh as the node set names of forming_mesh.h ("y0", "x0",
+// "diagonal", "..._neg") and the user-facing Profile::line names ("x", "y", "diagonal", ...).
+std::vector<std::string> profile_lines(const ShellMesh& mesh);
+std::string profile_line_name(const std::string& node_set);
 
 // Linear interpolation of (x, y) (x increasing) at xq; clamped to the ends.
 double interpolate(const std::vector<double>& x, const std::vector<double>& y, double xq);

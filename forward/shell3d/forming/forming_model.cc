@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 
+#include "contact/coulomb.h"
 #include "core/error.h"
 #include "shell3d/forming/forming_mesh.h"
 #include "shell3d/quadrature.h"
@@ -13,8 +14,6 @@
 namespace vs::shell3d {
 
 namespace {
-
-constexpr double kTwoOverPi = 2.0 / std::numbers::pi;
 
 Shell9Rule element_rule(const Scene& scene) {
   return scene.numerics.element_rule == ShellElementRule::kMitc9 ? Shell9Rule::kMitc9
@@ -441,12 +440,11 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     FrictionTerm t;
     t.dof = model_->dof(i, 0);
     const Eigen::Vector2d slip(x(t.dof) - w.dot(Q.col(0)), x(t.dof + 1) - w.dot(Q.col(1)));
-    const double v = slip.norm(), a = v / v0, at = std::atan(a);
-    const double f = limit * kTwoOverPi * at;
-    const double ks = a < 1e-8 ? limit * kTwoOverPi / v0 : f / v;
-    const double kt = limit * kTwoOverPi / (v0 * (1.0 + a * a));
+    const double v = slip.norm();
+    const CoulombTerms law = regularised_coulomb(limit, v, v0);
+    const double ks = law.secant, kt = law.tangent;
     t.force = ks * slip;
-    t.potential = limit * kTwoOverPi * (v * at - 0.5 * v0 * std::log1p(a * a));
+    t.potential = law.potential;
     if (want_matrix) {
       t.stiffness = ks * Eigen::Matrix2d::Identity();
       if (kind == Shell9Stiffness::kTangent && v > 0.0) {

@@ -1,4 +1,4 @@
-#include "shell3d/forming/axisym_comparison.h"
+#include "common/axisym_comparison.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,9 +45,9 @@ const StepRecord* step_at(const std::vector<StepRecord>& steps, double travel) {
   return nullptr;
 }
 
-double line_deviation(const Shell3dResult& shell, const ShellStage& stage, const Profile& axi,
+double line_deviation(const RunResult& shell, const ShellStage& stage, const Profile& axi,
                       const std::string& line, double h0) {
-  const LineProfile p = line_profile(shell.mesh, stage, line, h0);
+  const LineProfile p = line_profile(shell.shell->mesh, stage, line, h0);
   double dev = 0.0;
   for (std::size_t i = 0; i < p.nodes.size(); ++i) {
     const double ref = interpolate(axi.r0_mm, axi.eps_thickness, p.r0_mm[i]);
@@ -74,21 +74,21 @@ double mean_force(const std::vector<StepRecord>& steps, double a, double b) {
   return length > 0.0 ? work / length : std::nan("");
 }
 
-std::vector<TravelComparison> compare_with_axisymmetric(const Scene& scene,
-                                                        const Shell3dResult& shell,
+std::vector<TravelComparison> compare_with_axisymmetric(const Scene& scene, const RunResult& shell,
                                                         const RunResult& axisym, double window_mm) {
   std::vector<TravelComparison> out;
   const double h0 = scene.blank.thickness_mm;
   for (double travel : scene.process.output_travels_mm) {
     const StepRecord* s3 = step_at(shell.steps, travel);
     const StepRecord* sa = step_at(axisym.steps, travel);
-    auto stage = std::find_if(shell.stages.begin(), shell.stages.end(), [&](const ShellStage& st) {
-      return std::abs(st.punch_travel_mm - travel) <= 1e-9 * (1.0 + travel);
-    });
+    auto stage = std::find_if(
+        shell.shell->stages.begin(), shell.shell->stages.end(), [&](const ShellStage& st) {
+          return std::abs(st.punch_travel_mm - travel) <= 1e-9 * (1.0 + travel);
+        });
     auto prof = std::find_if(axisym.profiles.begin(), axisym.profiles.end(), [&](const Profile& p) {
       return std::abs(p.punch_travel_mm - travel) <= 1e-9 * (1.0 + travel);
     });
-    if (!s3 || !sa || stage == shell.stages.end() || prof == axisym.profiles.end()) continue;
+    if (!s3 || !sa || stage == shell.shell->stages.end() || prof == axisym.profiles.end()) continue;
     TravelComparison c;
     c.punch_travel_mm = travel;
     c.force_3d_N = s3->punch_force_N;

@@ -1,4 +1,4 @@
-#include "solver/block_tridiag.h"
+#include "linalg/block_tridiag.h"
 
 #include <Eigen/LU>
 #include <algorithm>

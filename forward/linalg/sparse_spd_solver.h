@@ -13,17 +13,17 @@
 #include <Eigen/SparseCholesky>
 #include <memory>
 
-#include "shell3d/assembler.h"
+#include "linalg/sparse_matrix.h"
 
-namespace vs::shell3d {
+namespace vs {
 
-enum class SolverKind { kCholmodSupernodal, kSimplicialLDLT, kAuto };
+enum class SparseSolverKind { kCholmodSupernodal, kSimplicialLDLT, kAuto };
 
 inline constexpr int kAutoCholmodDofs = 8000;
 
 class SparseSpdSolver {
  public:
-  explicit SparseSpdSolver(SolverKind preferred = SolverKind::kAuto);
+  explicit SparseSpdSolver(SparseSolverKind preferred = SparseSolverKind::kAuto);
   ~SparseSpdSolver();
 
   // Symbolic analysis of the pattern (call again only if the pattern changes).
@@ -32,17 +32,17 @@ class SparseSpdSolver {
   bool factorize(const SparseMatrix& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // The solver that produced the last successful factorisation.
-  SolverKind active() const { return active_; }
+  SparseSolverKind active() const { return active_; }
   int analyses() const { return analyses_; }
 
  private:
   using Cholmod = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
   using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
-  SolverKind requested_, preferred_, active_;  // preferred_: kAuto resolved at analyze()
+  SparseSolverKind requested_, preferred_, active_;  // preferred_: kAuto resolved at analyze()
   std::unique_ptr<Cholmod> cholmod_;
   std::unique_ptr<Ldlt> ldlt_;
   bool ldlt_analyzed_ = false;
   int analyses_ = 0;
 };
 
-}  // namespace vs::shell3d
+}  // namespace vs

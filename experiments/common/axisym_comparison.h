@@ -8,7 +8,6 @@
 
 #include "run/run_result.h"
 #include "scene/scene.h"
-#include "shell3d/forming/forming_result.h"
 
 namespace vs::shell3d {
 
@@ -43,7 +42,7 @@ struct TravelComparison {
 
 // One entry per travel of scene.process.output_travels_mm that both runs reached.
 std::vector<TravelComparison> compare_with_axisymmetric(const Scene& shell3d_scene,
-                                                        const Shell3dResult& shell,
+                                                        const RunResult& shell,
                                                         const RunResult& axisym,
                                                         double window_mm = 1.0);
 

@@ -1,10 +1,11 @@
-#include "shell3d/sparse_solver.h"
+#include "linalg/sparse_spd_solver.h"
 
-namespace vs::shell3d {
+namespace vs {
 
-SparseSpdSolver::SparseSpdSolver(SolverKind preferred)
+SparseSpdSolver::SparseSpdSolver(SparseSolverKind preferred)
     : requested_(preferred),
-      preferred_(preferred == SolverKind::kAuto ? SolverKind::kCholmodSupernodal : preferred),
+      preferred_(preferred == SparseSolverKind::kAuto ? SparseSolverKind::kCholmodSupernodal
+                                                      : preferred),
       active_(preferred_) {}
 
 SparseSpdSolver::~SparseSpdSolver() = default;
@@ -12,11 +13,11 @@ SparseSpdSolver::~SparseSpdSolver() = default;
 void SparseSpdSolver::analyze(const SparseMatrix& A) {
   ++analyses_;
   ldlt_analyzed_ = false;
-  if (requested_ == SolverKind::kAuto) {
-    preferred_ =
-        A.rows() < kAutoCholmodDofs ? SolverKind::kSimplicialLDLT : SolverKind::kCholmodSupernodal;
+  if (requested_ == SparseSolverKind::kAuto) {
+    preferred_ = A.rows() < kAutoCholmodDofs ? SparseSolverKind::kSimplicialLDLT
+                                             : SparseSolverKind::kCholmodSupernodal;
   }
-  if (preferred_ == SolverKind::kCholmodSupernodal) {
+  if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
     cholmod_ = std::make_unique<Cholmod>();
     cholmod_->analyzePattern(A);
   } else {
@@ -27,10 +28,10 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
 }
 
 bool SparseSpdSolver::factorize(const SparseMatrix& A) {
-  if (preferred_ == SolverKind::kCholmodSupernodal) {
+  if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
     cholmod_->factorize(A);
     if (cholmod_->info() == Eigen::Success) {
-      active_ = SolverKind::kCholmodSupernodal;
+      active_ = SparseSolverKind::kCholmodSupernodal;
       return true;
     }
   }
@@ -40,13 +41,13 @@ bool SparseSpdSolver::factorize(const SparseMatrix& A) {
     ldlt_analyzed_ = true;
   }
   ldlt_->factorize(A);
-  active_ = SolverKind::kSimplicialLDLT;
+  active_ = SparseSolverKind::kSimplicialLDLT;
   return ldlt_->info() == Eigen::Success;
 }
 
 Eigen::VectorXd SparseSpdSolver::solve(const Eigen::VectorXd& b) const {
-  if (active_ == SolverKind::kCholmodSupernodal) return cholmod_->solve(b);
+  if (active_ == SparseSolverKind::kCholmodSupernodal) return cholmod_->solve(b);
   return ldlt_->solve(b);
 }
 
-}  // namespace vs::shell3d
+}  // namespace vs
