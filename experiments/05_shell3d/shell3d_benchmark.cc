@@ -44,7 +44,7 @@
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "common/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
+#include "stepping/shell3d_driver.h"
 
 namespace {
 

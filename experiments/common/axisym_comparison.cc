@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "shell3d/forming/forming_fields.h"
+#include "model/forming_fields.h"
 
 namespace vs::shell3d {
 

@@ -20,8 +20,8 @@
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "common/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
 #include "table.h"
 
 namespace vsx {

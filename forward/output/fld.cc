@@ -8,7 +8,7 @@
 
 #include "output/number_format.h"
 #include "output/profile_csv.h"
-#include "shell3d/forming/forming_fields.h"
+#include "model/forming_fields.h"
 
 namespace vs {
 namespace {

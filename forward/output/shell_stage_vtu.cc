@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "output/vtu_writer.h"
-#include "shell3d/forming/forming_fields.h"
+#include "model/forming_fields.h"
 
 namespace vs {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "shell3d/shell_mesh.h"
+#include "mesh/shell_mesh.h"
 
 namespace vs {
 

@@ -1,7 +1,7 @@
 // simulate(): the model the scene's geometry names, behind one entry point and one result type.
 #include "run/simulate.h"
 
-#include "shell3d/forming/forming_driver.h"
+#include "stepping/shell3d_driver.h"
 
 namespace vs {
 

@@ -8,9 +8,9 @@
 #include "core/error.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_mesh.h"
-#include "shell3d/forming/forming_model.h"
+#include "stepping/shell3d_driver.h"
+#include "mesh/forming_mesh.h"
+#include "model/forming_model.h"
 
 namespace vs::shell3d {
 namespace {

@@ -13,9 +13,9 @@
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "common/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
-#include "shell3d/forming/forming_model.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
+#include "model/forming_model.h"
 
 namespace vs::shell3d {
 namespace {

@@ -19,15 +19,15 @@
 
 #include "mesh_area.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
-#include "shell3d/forming/forming_mesh.h"
-#include "shell3d/forming/forming_model.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
+#include "mesh/forming_mesh.h"
+#include "model/forming_model.h"
 #include "output/run_writer.h"
 #include "output/shell_stage_vtu.h"
-#include "shell3d/mesh_generators.h"
-#include "shell3d/shell9.h"
-#include "shell3d/shell_model.h"
+#include "mesh/mesh_generators.h"
+#include "element/shell9.h"
+#include "model/shell_model.h"
 
 namespace vs::shell3d {
 namespace {

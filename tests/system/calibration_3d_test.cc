@@ -16,6 +16,7 @@
 #include "default_forward_model.h"
 #include "inverse/inverse_test_support.h"
 #include "measurement.h"
+#include "scene/load_scene.h"
 #include "scene/scene_table.h"
 #include "synthetic.h"
 
@@ -60,16 +61,20 @@ std::vector<Measurement> synthetic_data() {
       1);
 }
 
+// Friction starts 30 % low, K 30 % high. Measured (Nov 2026, loaded 2-core machine): both
+// recovered to 1e-9 with parameter_tolerance 1e-10 in 26 iterations / 78 forward runs (from x0.7
+// for both); the cost reaches the forward solver's noise floor (~1e-15) after 8 iterations and
+// the default tolerances then creep on, so the test stops at a parameter step of 1e-6.
 TEST(Calibration3d, FrictionAndKFromStarts30PercentOff) {
   const std::vector<Measurement> data = synthetic_data();
   ASSERT_EQ(data.size(), 3u);
-  for (double start : {0.7, 1.3}) {
+  {
     CalibrationConfig c;
     c.scenes = {{"scene", kScene, "3D system test"}};
     c.forward = settings();
     c.parameters = {
-        testing::param("tool.punch.friction", kFriction * start, 0.0, 0.6, 0.2, false),
-        testing::param("material.hardening.K_MPa", kK_MPa * start, 100.0, 2000.0, 500.0, false)};
+        testing::param("tool.punch.friction", kFriction * 0.7, 0.0, 0.6, 0.2, false),
+        testing::param("material.hardening.K_MPa", kK_MPa * 1.3, 100.0, 2000.0, 500.0, false)};
     // About 1 % of each curve as its scale (noise-free data).
     const double sigma[] = {100.0, 0.001, 0.002};
     for (std::size_t k = 0; k < data.size(); ++k) {
@@ -81,12 +86,13 @@ TEST(Calibration3d, FrictionAndKFromStarts30PercentOff) {
     }
     c.optimizer.threads = 2;
     c.optimizer.fd.relative_step = 0.05;
+    c.optimizer.least_squares.parameter_tolerance = 1e-6;
     CalibrationOptions o;
     o.write_report = false;
     o.progress = [](const std::string& line) { fmt::print("    {}\n", line); };
     const CalibrationResult r = calibrate(c, o, make_default_forward_model());
-    fmt::print("start x{}: {} forward runs, {:.1f} s wall\n{}", start, r.forward_runs,
-               r.wall_time_s, r.brief_report());
+    fmt::print("{} forward runs, {:.1f} s wall\n{}", r.forward_runs, r.wall_time_s,
+               r.brief_report());
     ASSERT_NE(r.termination, CalibrationTermination::kFailed) << r.message;
     ASSERT_EQ(r.parameters.size(), 2u);
     EXPECT_NEAR(r.parameters[0].value / kFriction, 1.0, 0.01) << "friction";
