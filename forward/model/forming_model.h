@@ -31,13 +31,13 @@
 #include <vector>
 
 #include "contact/rigid_tool.h"
-#include "material/hardening.h"
-#include "material/viscous_law.h"
-#include "scene/scene.h"
-#include "model/shell_assembler.h"
-#include "material/hill_plane_stress.h"
 #include "element/shell9.h"
+#include "material/hardening.h"
+#include "material/hill_plane_stress.h"
+#include "material/viscous_law.h"
+#include "model/shell_assembler.h"
 #include "model/shell_model.h"
+#include "scene/scene.h"
 
 namespace vs::shell3d {
 
@@ -113,7 +113,16 @@ class FormingModel {
 
   // Per-step material data (as AxisymModel::freeze_material): yield stress and hardening
   // viscosity theta H dt per flow point, shear penalty viscosity per element.
-  void freeze_material(const FormingState& s, double dt_predicted);
+  // eps_bar: per element and flow point, as FormingState::eps_bar (the state's own, or the
+  // start-of-step values for the Heun predictor's solve with backward-Euler hardening).
+  void freeze_material(const std::vector<double>& eps_bar, double dt_predicted);
+  void freeze_material(const FormingState& s, double dt_predicted) {
+    freeze_material(s.eps_bar, dt_predicted);
+  }
+  // The weight theta of the hardening viscosity theta H dt: 1/2 midpoint (the default), 1
+  // backward Euler (smoother in the parameters; see freeze_material in forming_model.cc).
+  void set_hardening_theta(double theta) { hardening_theta_ = theta; }
+  double hardening_theta() const { return hardening_theta_; }
   // Nodal frames, director frames, prescribed values and the element operators
   // (shell9_operators) of state s; call before evaluate(), potential() and point_rates(), which
   // then evaluate state s (their s argument must be the prepared state).
@@ -211,6 +220,7 @@ class FormingModel {
   double holder_force_ = 0.0, holder_friction_ = 0.0;  // whole blank [N], Coulomb coefficient
   double nominal_rate_ = 1.0;
   double friction_velocity_ = 1e-4;
+  double hardening_theta_ = 0.5;
   std::vector<char> axis_, sym_, eligible_;
   int spin_node_ = -1;  // full blank, free edge: see fix_rigid_modes()
   std::vector<std::vector<int>> neighbours_;

@@ -387,12 +387,7 @@ Solved AxisymStepper::average(const Solved& a, const Solved& b) const {
   Solved mid;
   mid.state = a.state;
   mid.state.v = 0.5 * (a.state.v + b.state.v);
-  mid.point_rates = a.point_rates;
-  for (std::size_t e = 0; e < mid.point_rates.size(); ++e) {
-    for (std::size_t k = 0; k < mid.point_rates[e].size(); ++k) {
-      mid.point_rates[e][k] = 0.5 * (a.point_rates[e][k] + b.point_rates[e][k]);
-    }
-  }
+  mid.point_rates = mean_point_rates(a.point_rates, b.point_rates);
   return mid;
 }
 

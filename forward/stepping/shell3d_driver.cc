@@ -205,10 +205,12 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
                            std::string* why) {
   FormingState& s = out->state;
   model_.place_tools(s);
-  // The 3D model keeps its midpoint hardening from the state's own eps_bar (the predictor's
-  // included): see FormingModel::freeze_material.
-  (void)hardening_from;
-  model_.freeze_material(s, dt_predicted);
+  // Backward Euler hardens the Heun predictor from the start of the step, as the axisymmetric
+  // stepper (FormingModel::freeze_material); the midpoint weight, kept for comparison, hardens
+  // from the state's own eps_bar.
+  model_.freeze_material(
+      hardening_from != nullptr && model_.hardening_theta() == 1.0 ? *hardening_from : s.eps_bar,
+      dt_predicted);
   holds.new_solve(model_.num_nodes());
   constexpr double kStickingPullOff = 0.25;
   for (int round = 0; round < driver_.max_contact_rounds; ++round) {
@@ -378,12 +380,7 @@ Solved Shell3dStepper::average(const Solved& a, const Solved& b) const {
     mid.state.velocity[i] = 0.5 * (a.state.velocity[i] + b.state.velocity[i]);
     mid.state.omega[i] = 0.5 * (a.state.omega[i] + b.state.omega[i]);
   }
-  mid.point_rates = a.point_rates;
-  for (std::size_t e = 0; e < mid.point_rates.size(); ++e) {
-    for (std::size_t k = 0; k < mid.point_rates[e].size(); ++k) {
-      mid.point_rates[e][k] = 0.5 * (a.point_rates[e][k] + b.point_rates[e][k]);
-    }
-  }
+  mid.point_rates = mean_point_rates(a.point_rates, b.point_rates);
   return mid;
 }
 
@@ -459,6 +456,15 @@ void Shell3dStepper::start(RunResult* result) const {
       "linear solver: {} (sparse, fixed pattern, analysis once)",
       model_.num_dofs() < kAutoCholmodDofs ? "Eigen SimplicialLDLT" : "CHOLMOD supernodal LL^T"));
   for (std::string& line : tool_components(scene_)) result->built.push_back(std::move(line));
+  // As the axisymmetric stepper: a shell discretisation finer than the thickness resolves nothing
+  // real. The measure is the element size sqrt(A_e) (two node intervals of a 9-node element).
+  const double size = shortest_element_mm();
+  if (size < scene_.blank.thickness_mm) {
+    result->warnings.push_back(fmt::format(
+        "smallest element size {:.3g} mm is shorter than the thickness {:.3g} mm: contact "
+        "reactions oscillate and strain profiles become noisy; use fewer divisions",
+        size, scene_.blank.thickness_mm));
+  }
 }
 
 void Shell3dStepper::finish(RunResult* result) const {
