@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "scene/toml_guard.h"
 
 namespace vs {
 namespace {
@@ -265,13 +266,7 @@ void read_forward(const toml::table* t, const std::string& file, ForwardSettings
 }  // namespace
 
 CalibrationConfig load_calibration_config(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: {}", path, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  const toml::table root = parse_toml_file(path, "calibration config");
   const std::string base_dir = fs::path(path).parent_path().string();
   CalibrationConfig config;
   config.path = path;
