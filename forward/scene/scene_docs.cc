@@ -48,6 +48,7 @@ std::string allowed_text(const KeySpec& key, bool markdown) {
       key.type == KeyType::kFloatArray) {
     std::string out = key.range.text();
     if (key.sticking_alias) out += markdown ? " or `\"sticking\"`" : " or \"sticking\"";
+    if (key.max_items > 0) out += fmt::format(", at most {} values", key.max_items);
     return out;
   }
   if (key.identifier) return "[A-Za-z0-9_]+";

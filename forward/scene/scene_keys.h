@@ -5,6 +5,7 @@
 // are read from a default-constructed Scene / ToolSpec (the in-class defaults of scene.h).
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -57,8 +58,13 @@ struct KeySpec {
   std::string_view section;  // "" (top level), "blank", "material.hardening", "tool", ...
   std::string_view name;
   KeyType type = KeyType::kFloat;
-  std::string_view unit;                  // "" for dimensionless
-  Range range;                            // kFloat, kInt, kFloatArray
+  std::string_view unit;      // "" for dimensionless
+  Range range;                // kFloat, kInt, kFloatArray
+  std::size_t max_items = 0;  // kFloatArray: most values allowed; 0 = no limit
+  // Why the range stops where it does, when that is a resource bound rather than physics;
+  // appended to out-of-range messages ("... is out of range [4, 2000]: <bound_reason>").
+  std::string_view bound_reason;
+  bool bound_reason_below = false;  // the reason is for the lower bound (else the upper one)
   std::vector<std::string_view> choices;  // kEnum: allowed strings; kInt: allowed values if set
   // Variants of the section's selector (hardening law, rate law, tool kind) this key is used by;
   // empty = every variant.

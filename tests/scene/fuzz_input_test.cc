@@ -1,6 +1,7 @@
 // Generated malformed scene inputs: whatever the text, load_scene either loads it or throws
 // InputError with a one-line message; never another exception, never a signal (a crash would
 // kill this test binary). Each generated test is bounded in time (about a second).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "scene/fuzz_mutate.h"
+#include "scene/scene_keys.h"
 #include "scene/scene_table.h"
 #include "scene/toml_guard.h"
 #include "scene_test_util.h"
@@ -133,6 +135,81 @@ TEST(FuzzInput, MutatedBundledScenesLoadOrGiveOneLine) {
   }
   EXPECT_GT(cases, 100);
   EXPECT_GT(errors, cases / 4);
+}
+
+}  // namespace
+}  // namespace vs
+
+namespace vs {
+namespace {
+
+// The section text that sets `key` to `value` on top of kMinimalScene (tool keys on the punch).
+std::string with_value(const KeySpec& key, const std::string& value) {
+  if (key.section == "tool") {
+    return testing::kMinimalScene.substr(0, testing::kMinimalScene.size() - 1) +
+           fmt::format("{} = {}\n", key.name, value);
+  }
+  if (key.section.empty())
+    return fmt::format("{} = {}\n", key.name, value) + testing::kMinimalScene;
+  return testing::kMinimalScene + fmt::format("[{}]\n{} = {}\n", key.section, key.name, value);
+}
+
+TEST(FuzzInput, ExtremeValuesOfEveryNumericKeyGiveOneLine) {
+  const std::vector<std::string> extremes = {
+      "0",          "-1",      "1e308", "-1e308",     "1e-308",
+      "nan",        "inf",     "-inf",  "2147483648", "9223372036854775807",
+      "1000000000", "[1e308]", "[]"};
+  int errors = 0;
+  for (const KeySpec& key : scene_keys()) {
+    if (key.type != KeyType::kFloat && key.type != KeyType::kInt &&
+        key.type != KeyType::kFloatArray) {
+      continue;
+    }
+    for (const std::string& value : extremes) {
+      const std::string message = testing::scene_error(with_value(key, value));
+      if (message == "loaded") continue;
+      ++errors;
+      EXPECT_EQ(message.find('\n'), std::string::npos)
+          << key.address_in_section() << " = " << value;
+      EXPECT_EQ(message.rfind("scene.toml", 0), 0u) << message;
+    }
+  }
+  EXPECT_GT(errors, 100);
+}
+
+// Sizes that used to pass `vshell check` and then exhaust memory or run for hours.
+TEST(FuzzInput, AbsurdSizesAndStepCountsAreRefusedWithTheReason) {
+  const std::string travel1000 = [] {
+    std::string list = "[";
+    for (int i = 1; i <= 1000; ++i) list += fmt::format("{}{}", i > 1 ? ", " : "", 0.01 * i);
+    return list + "]";
+  }();
+  const struct {
+    std::string text;
+    std::string expected;
+  } cases[] = {
+      {"[blank]\nelements = 1000000000\n", "grow with the square of the element count"},
+      {"[numerics]\nstep_fraction = 1e-4\n", "ln(1/f)/f steps per contact event"},
+      {"[numerics]\nmax_strain_increment = 1e-9\n", "take millions of steps"},
+      {"[numerics]\nmax_iterations = 100000000\n", "1000 iterations will not"},
+      {"[process]\npunch_travel_mm = 30\noutput_travels_mm = " + travel1000 + "\n",
+       "1000 values, more than the 500 allowed"},
+      {"[numerics]\nmax_travel_increment_mm = 1e-9\n", "more than the 1e+06 a run may take"},
+      {"[numerics]\nmax_travel_increment_per_length = 1e-7\n",
+       "more than the 1e+06 a run may take"},
+      {"[process]\npunch_travel_mm = 1e6\n", "shorten process.punch_travel_mm"},
+      {"[blank]\nelements = 2000\n[process]\npunch_travel_mm = 100\n",
+       "more than the 1e+08 allowed for axisymmetric runs"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = testing::scene_error(
+        std::string("[blank]\nradius_mm = 59.18\nthickness_mm = 0.85\n") +
+        (c.text.rfind("[blank]", 0) == 0 ? c.text.substr(8) : "") +
+        "[[tool]]\nname = \"punch\"\nkind = \"hemispherical_punch\"\nradius_mm = 50.8\n" +
+        (c.text.rfind("[blank]", 0) == 0 ? "" : c.text));
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.text << "\n -> " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
 }
 
 }  // namespace
