@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
     print_text(vs::scene_reference_markdown());
   });
 
-  vs::add_calibrate_command(app);
+  vs::add_calibrate_command(app, exit_code);
   vs::add_fit_hardening_command(app);
 
   try {

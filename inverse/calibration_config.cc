@@ -5,8 +5,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
+#include <system_error>
 
 #include "core/error.h"
 #include "scene/toml_guard.h"
@@ -144,11 +146,30 @@ ParameterSpec read_parameter(const toml::table& t, const std::string& file) {
   const auto address = reader.string("address");
   if (!address) throw InputError(fmt::format("{}: [[parameter]] needs an address", p.where));
   p.address = *address;
-  // A missing initial value is taken from the scene later; NaN marks it until then.
-  p.initial = reader.number("initial").value_or(std::nan(""));
-  p.lower = reader.number("lower").value_or(p.lower);
-  p.upper = reader.number("upper").value_or(p.upper);
-  p.scale = reader.number("scale").value_or(0.0);  // 0: derived from the initial value later
+  // A missing initial value is taken from the scene later; NaN marks it until then, so a NaN
+  // written in the file must not reach it.
+  const auto initial = reader.number("initial");
+  if (initial && !std::isfinite(*initial)) {
+    throw InputError(
+        fmt::format("{}: must be a finite number, got {} (omit it to start from "
+                    "the scene's value)",
+                    reader.where_key("initial"), *initial));
+  }
+  p.initial = initial.value_or(std::nan(""));
+  for (const char* bound : {"lower", "upper"}) {
+    const auto value = reader.number(bound);
+    if (value && std::isnan(*value)) {
+      throw InputError(fmt::format("{}: must be a number or +-inf, got nan (omit it for no bound)",
+                                   reader.where_key(bound)));
+    }
+    if (value) (std::string(bound) == "lower" ? p.lower : p.upper) = *value;
+  }
+  const auto scale = reader.number("scale");  // absent: derived from the initial value later
+  if (scale && !(std::isfinite(*scale) && *scale > 0.0)) {
+    throw InputError(fmt::format("{}: must be finite and > 0, got {} (omit it for |initial|)",
+                                 reader.where_key("scale"), *scale));
+  }
+  p.scale = scale.value_or(0.0);
   p.fixed = reader.boolean("fixed").value_or(false);
   reader.finish();
   return p;
@@ -333,8 +354,22 @@ void validate_calibration_config(const CalibrationConfig& config) {
 
   if (config.data.empty()) throw InputError(fmt::format("{}: no [[data]]", file));
   std::set<std::string> names;
+  std::map<std::string, const DataSpec*> files;  // canonical file -> first data set reading it
   std::size_t points = 0;
   for (const auto& d : config.data) {
+    std::error_code ec;
+    if (fs::is_regular_file(d.measurement.file, ec)) {  // not for data made in code
+      std::string key = fs::weakly_canonical(d.measurement.file, ec).string();
+      if (ec) key = d.measurement.file;
+      const auto [it, inserted] = files.emplace(key, &d);
+      if (!inserted) {
+        throw InputError(fmt::format(
+            "{}: data set '{}' reads {}, which data set '{}' ({}) reads already: its points "
+            "would count twice",
+            d.where, d.measurement.name, d.measurement.file, it->second->measurement.name,
+            it->second->where));
+      }
+    }
     const Measurement& m = d.measurement;
     if (m.x.empty()) throw InputError(fmt::format("{}: data set '{}' is empty", d.where, m.name));
     if (m.x.size() != m.y.size() ||

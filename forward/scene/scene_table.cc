@@ -138,6 +138,10 @@ toml::table read_scene_table(const std::string& path) {
   return parse_toml_file(path, "scene file");
 }
 
+const KeySpec& scene_address_key(const toml::table& table, const std::string& address) {
+  return *resolve(table, address).key;
+}
+
 double get_scene_number(const toml::table& table, const std::string& address) {
   const Target target = resolve(table, address);
   if (!is_numeric(*target.key)) {

@@ -5,7 +5,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "calibrate.h"
@@ -85,6 +87,110 @@ class CalibrationFuzz : public ::testing::Test {
 };
 
 TEST_F(CalibrationFuzz, TheUnmodifiedConfigRuns) { EXPECT_EQ(outcome(kConfig), "ok"); }
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+TEST_F(CalibrationFuzz, ParameterValuesThatWouldBeSilentlyReplacedAreErrors) {
+  const std::string c = kConfig;
+  EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = nan"))
+                .find("calibrate.toml:4: key 'parameter.initial': must be a finite number, got nan "
+                      "(omit it to start from the scene's value)"),
+            std::string::npos);
+  EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = inf")).find("must be a finite number"),
+            std::string::npos);
+  EXPECT_NE(outcome(replaced(c, "lower = 0.0", "lower = nan")).find("key 'parameter.lower'"),
+            std::string::npos);
+  EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = 0.05\nscale = 0"))
+                .find("key 'parameter.scale': must be finite and > 0, got 0"),
+            std::string::npos);
+}
+
+TEST_F(CalibrationFuzz, IntegerKeysCannotBeCalibrated) {
+  const std::string message = outcome(replaced(
+      kConfig, "address = \"tool.punch.friction\"\ninitial = 0.05\nlower = 0.0\nupper = 0.5",
+      "address = \"blank.elements\"\nlower = 10\nupper = 40"));
+  EXPECT_NE(message.find("calibrate.toml:2: parameter 'blank.elements' is an integer key: integer "
+                         "keys cannot be calibrated"),
+            std::string::npos)
+      << message;
+}
+
+TEST_F(CalibrationFuzz, TheSameFileUnderTwoNamesIsAnError) {
+  const std::string message = outcome(std::string(kConfig) +
+                                      "[[data]]\nkind = \"load_travel\"\nfile = \"./load.csv\"\n"
+                                      "sigma = 50.0\nname = \"load_again\"\n");
+  EXPECT_NE(message.find("data set 'load_again' reads"), std::string::npos) << message;
+  EXPECT_NE(message.find("which data set 'load' (" + (dir_ / "calibrate.toml").string() +
+                         ":11) reads already: its points would count twice"),
+            std::string::npos)
+      << message;
+}
+
+// Files written for a failed calibration: no NaN, no null, the reason stated.
+void expect_clean_failed_report(const fs::path& out, const std::string& reason) {
+  std::ifstream json_in(out / "calibration.json");
+  std::stringstream json;
+  json << json_in.rdbuf();
+  EXPECT_EQ(json.str().find(": null"), std::string::npos) << json.str();
+  EXPECT_EQ(json.str().find("nan"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"termination\": \"failed\""), std::string::npos);
+  EXPECT_NE(json.str().find("\"failure\": \""), std::string::npos);
+  EXPECT_NE(json.str().find(reason), std::string::npos) << json.str();
+  std::ifstream csv_in(out / "evaluations.csv");
+  std::stringstream csv;
+  csv << csv_in.rdbuf();
+  EXPECT_EQ(csv.str().find("nan"), std::string::npos) << csv.str();
+  EXPECT_NE(csv.str().find(",failed,,"), std::string::npos) << csv.str();
+}
+
+TEST_F(CalibrationFuzz, AFitWhoseForwardRunsAllFailStopsWithTheRunsReason) {
+  const CalibrationConfig config = [&] {
+    write_file(dir_ / "calibrate.toml", kConfig);
+    return load_calibration_config((dir_ / "calibrate.toml").string());
+  }();
+  CalibrationOptions options;
+  options.output_directory = (dir_ / "out").string();
+  StretchingFake fake;
+  fake.fail_above_friction = -1.0;  // every run fails
+  const CalibrationResult result = calibrate(config, options, fake);
+  EXPECT_EQ(result.termination, CalibrationTermination::kFailed);
+  EXPECT_EQ(result.evaluations.size(), 1u);  // stopped before the fit
+  EXPECT_EQ(result.message,
+            "the forward run at the initial parameters fails: " + (dir_ / "scene.toml").string() +
+                ": fake: no convergence at high friction");
+  EXPECT_EQ(result.brief_report().find("nan"), std::string::npos) << result.brief_report();
+  expect_clean_failed_report(dir_ / "out", "fake: no convergence at high friction");
+}
+
+// Runs succeed only at the start: every finite-difference run fails, Ceres cannot take a step.
+struct OnlyTheStartRuns {
+  double start = 0.05;
+  RunResult operator()(const Scene& scene) const {
+    StretchingFake fake;
+    fake.fail_above_friction = punch_friction(scene) == start ? INFINITY : -1.0;
+    return fake(scene);
+  }
+};
+
+TEST_F(CalibrationFuzz, AFitWhoseDerivativesAllFailIsAFailureWithoutNaN) {
+  write_file(dir_ / "calibrate.toml",
+             replaced(kConfig,
+                      "address = \"material.hardening.K_MPa\"\nlower = 100.0\nupper = "
+                      "1000.0",
+                      "address = \"material.hardening.K_MPa\"\nfixed = true"));
+  const CalibrationConfig config = load_calibration_config((dir_ / "calibrate.toml").string());
+  CalibrationOptions options;
+  options.output_directory = (dir_ / "out").string();
+  const CalibrationResult result = calibrate(config, options, OnlyTheStartRuns{});
+  EXPECT_EQ(result.termination, CalibrationTermination::kFailed) << result.message;
+  EXPECT_EQ(result.message.find('\n'), std::string::npos);
+  EXPECT_EQ(result.brief_report().find("nan"), std::string::npos) << result.brief_report();
+  expect_clean_failed_report(dir_ / "out", "fake: no convergence at high friction");
+}
 
 TEST_F(CalibrationFuzz, DeepNestingIsAnErrorNamingTheLine) {
   for (int depth : {kMaxTomlNesting + 1, 100000}) {
