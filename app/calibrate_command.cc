@@ -55,6 +55,10 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* sub = app.add_subcommand(
       "calibrate", "Identify scene parameters (friction, hardening, R, ...) from measured curves");
+  sub->footer(
+      "The config format, every key with its default, unit and range, the measurement CSV "
+      "format and the report files: docs/calibration-reference.md (also printed by `vshell "
+      "print-calibration-reference`). Exit codes: 0 done, 2 bad input, 3 calibration failed.");
   sub->add_option("CONFIG", args->config,
                   "Calibration file (TOML); every key is documented in "
                   "docs/calibration-reference.md (`vshell print-calibration-reference`)")

@@ -118,8 +118,8 @@ std::vector<DataSet> make_data_sets(const CalibrationConfig& config) {
     set.scene = scene_index(config, d);
     for (std::size_t i = 0; i < d.measurement.x.size(); ++i) {
       const double w = !d.measurement.point_sigma.empty() ? 1.0 / d.measurement.point_sigma[i]
-                       : d.sigma > 0.0                    ? 1.0 / d.sigma
-                                                          : d.weight;
+                       : d.weight > 0.0                   ? d.weight
+                                                          : 1.0 / data_set_sigma(d).sigma;
       set.weights.push_back(w);
     }
     sets.push_back(std::move(set));
@@ -234,6 +234,9 @@ std::string CalibrationResult::brief_report() const {
     }
     ++k;
   }
+  for (const auto& w : data_weighting) {
+    if (w.relative_default) text += fmt::format("  data {}: {}\n", w.name, w.text);
+  }
   if (uncertainty_available) {
     for (const auto& s : uncertainty.statements) text += fmt::format("  note: {}\n", s);
   } else if (!uncertainty_message.empty()) {
@@ -259,6 +262,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
 
   CalibrationResult result;
   for (const auto& b : bindings) result.scene_sources.push_back(b.source());
+  for (const auto& d : config.data) {
+    result.data_weighting.push_back(
+        {d.measurement.name, data_set_sigma(d).text,
+         d.sigma == 0.0 && d.weight == 0.0 && d.measurement.point_sigma.empty()});
+  }
   ForwardCache cache(std::move(model), std::move(bindings), config.parameters,
                      ResidualPipeline(make_data_sets(config)), config.optimizer.threads);
   Objective objective(&cache, config.optimizer.fd);

@@ -196,6 +196,13 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
     j["uncertainty"] = {{"unavailable", result.uncertainty_message}};
   }
 
+  ordered_json weighting = ordered_json::array();
+  for (const auto& w : result.data_weighting) {
+    weighting.push_back(
+        {{"name", w.name}, {"weighting", w.text}, {"relative_default", w.relative_default}});
+  }
+  j["data_weighting"] = weighting;
+
   ordered_json data = ordered_json::array();
   for (const auto& fit : result.fits) {
     ordered_json entry = {

@@ -428,6 +428,7 @@ std::string float_toml_text(double x) {
 
 std::string default_toml_text(const KeySpec& key) {
   if (key.required) return "";
+  if (key.default_text != nullptr) return key.default_text();
   Scene scene;
   ToolSpec tool_spec;
   const KeyField& f = key.field;
@@ -453,6 +454,7 @@ std::string default_toml_text(const KeySpec& key) {
       return s + "]";
     }
     case KeyType::kPairArray:
+    case KeyType::kTable:
       return "";
   }
   return "";

@@ -97,15 +97,15 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 TEST_F(CalibrationFuzz, ParameterValuesThatWouldBeSilentlyReplacedAreErrors) {
   const std::string c = kConfig;
   EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = nan"))
-                .find("calibrate.toml:4: key 'parameter.initial': must be a finite number, got nan "
-                      "(omit it to start from the scene's value)"),
+                .find("calibrate.toml:4: key 'parameter.initial': must be a number, got nan"),
             std::string::npos);
-  EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = inf")).find("must be a finite number"),
+  EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = inf"))
+                .find("must be a finite number, got inf (omit it to start from the scene's value)"),
             std::string::npos);
   EXPECT_NE(outcome(replaced(c, "lower = 0.0", "lower = nan")).find("key 'parameter.lower'"),
             std::string::npos);
   EXPECT_NE(outcome(replaced(c, "initial = 0.05", "initial = 0.05\nscale = 0"))
-                .find("key 'parameter.scale': must be finite and > 0, got 0"),
+                .find("key 'parameter.scale': 0 is out of range (0, inf)"),
             std::string::npos);
 }
 
@@ -128,6 +128,27 @@ TEST_F(CalibrationFuzz, TheSameFileUnderTwoNamesIsAnError) {
                          ":11) reads already: its points would count twice"),
             std::string::npos)
       << message;
+}
+
+TEST_F(CalibrationFuzz, DataWithoutSigmaGetTheRelativeDefaultAndTheReportSaysSo) {
+  write_file(dir_ / "calibrate.toml", replaced(kConfig, "sigma = 50.0\n", ""));
+  const CalibrationConfig config = load_calibration_config((dir_ / "calibrate.toml").string());
+  const DataSigma sigma = data_set_sigma(config.data[0]);
+  EXPECT_DOUBLE_EQ(sigma.sigma, 0.01 * (300.0 - 100.0));  // 1 % of the measured range
+  CalibrationOptions options;
+  options.output_directory = (dir_ / "out").string();
+  const CalibrationResult result = calibrate(config, options, StretchingFake{});
+  ASSERT_EQ(result.data_weighting.size(), 2u);
+  EXPECT_TRUE(result.data_weighting[0].relative_default);
+  EXPECT_FALSE(result.data_weighting[1].relative_default);
+  EXPECT_NE(result.brief_report().find("data load: sigma = 2 N (default: 1 % of the measured "
+                                       "range 200 N; set sigma to state it)"),
+            std::string::npos)
+      << result.brief_report();
+  std::ifstream in(dir_ / "out" / "calibration.json");
+  std::stringstream json;
+  json << in.rdbuf();
+  EXPECT_NE(json.str().find("\"relative_default\": true"), std::string::npos);
 }
 
 // Files written for a failed calibration: no NaN, no null, the reason stated.
