@@ -230,8 +230,6 @@ ParameterSpec read_parameter(const toml::table& t, const std::string& file) {
   ParameterSpec p;
   p.where = reader.where();
   const auto address = reader.string("address");
-  if (!address) throw InputError(fmt::format("{}: [[parameter]] needs an address", p.where));
-  p.address = *address;
   // A missing initial value is taken from the scene later; NaN marks it until then, so a NaN
   // written in the file must not reach it.
   const auto initial = reader.number("initial");
@@ -246,7 +244,9 @@ ParameterSpec read_parameter(const toml::table& t, const std::string& file) {
   p.upper = reader.number("upper").value_or(p.upper);
   p.scale = reader.number("scale").value_or(0.0);  // 0: derived from the initial value later
   p.fixed = reader.boolean("fixed").value_or(false);
-  reader.finish();
+  reader.finish();  // a misspelt key first: "adress" is more useful than "needs an address"
+  if (!address) throw InputError(fmt::format("{}: [[parameter]] needs an address", p.where));
+  p.address = *address;
   return p;
 }
 
@@ -256,10 +256,6 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
   d.where = reader.where();
   const auto kind_name = reader.choice("kind");
   const auto data_file = reader.string("file");
-  if (!kind_name || !data_file) {
-    throw InputError(fmt::format("{}: [[data]] needs kind and file", d.where));
-  }
-  const MeasurementKind kind = measurement_kind_from_string(*kind_name, reader.where_key("kind"));
   d.sigma = reader.number("sigma").value_or(0.0);
   d.weight = reader.number("weight").value_or(0.0);
   d.relative_sigma = reader.number("relative_sigma").value_or(d.relative_sigma);
@@ -283,6 +279,10 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
     }
   }
   reader.finish();
+  if (!kind_name || !data_file) {
+    throw InputError(fmt::format("{}: [[data]] needs kind and file", d.where));
+  }
+  const MeasurementKind kind = measurement_kind_from_string(*kind_name, reader.where_key("kind"));
 
   try {
     d.measurement = read_measurement_csv(resolve(base_dir, *data_file), kind, columns);
