@@ -32,7 +32,6 @@
 #include "scene/load_scene.h"
 #include "scene/scene.h"
 #include "scene/scene_table.h"
-#include "shell3d/forming/forming_cli.h"
 
 namespace {
 
@@ -96,12 +95,6 @@ int run_command(const RunArgs& args) {
   const vs::Scene scene = load_scene_with_overrides(args.scene);
   const std::string dir = args.output_dir.empty() ? scene.output.directory : args.output_dir;
   create_output_folder(dir);
-  if (scene.geometry == vs::Geometry::kShell3d) {
-    const vs::shell3d::Shell3dCliOptions options{dir, args.quiet, args.verbose};
-    return vs::shell3d::run_shell3d_scene(scene, options, std::cout, std::cerr) ? kExitOk
-                                                                                : kExitRunFailed;
-  }
-
   // Streamed so that a crash keeps every converged step; rewritten identically at the end.
   vs::LoadTravelStream stream((fs::path(dir) / "load_travel.csv").string());
   vs::ProgressPrinter::Options progress_options;
@@ -123,7 +116,14 @@ int run_command(const RunArgs& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   for (const std::string& w : result.warnings) std::cerr << "warning: " << w << '\n';
+  const vs::RunTimings& t = result.timings;
   std::cout << vs::summary_report(vs::summarize_run(result)) << '\n'
+            << fmt::format("model             {}\n",
+                           result.built.empty() ? std::string("-") : result.built.front())
+            << fmt::format(
+                   "time split        assembly {:.2f} s, linear solves {:.2f} s, contact {:.2f} s "
+                   "of {:.2f} s\n",
+                   t.assembly_s, t.linear_solve_s, t.contact_s, t.total_s)
             << fmt::format("wall time         {:.2f} s\n", wall_s)
             << fmt::format("output folder     {}\n", dir);
   return result.completed() ? kExitOk : kExitRunFailed;
@@ -166,8 +166,9 @@ void print_text(const std::string& text) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "vshell: axisymmetric sheet-metal forming with the viscous shell formulation "
-      "(Onate & Zienkiewicz 1983)."};
+      "vshell: thin sheet-metal forming with the viscous shell formulation (Onate & Zienkiewicz "
+      "1983), axisymmetric (geometry = \"axisymmetric\") or general 3D (geometry = "
+      "\"shell3d\"), and its calibration."};
   app.footer(
       "Units everywhere: mm, N, s, MPa. Exit codes: 0 done, 2 bad input, 3 run failed (results "
       "up to the failure kept), 1 internal error.");
@@ -180,9 +181,11 @@ int main(int argc, char** argv) {
   RunArgs run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Run a scene and write its run folder: load_travel.csv (streamed during the run), "
-      "strains_travel_<travel>mm.csv, thinnest_point.csv, fld_points.csv, strain_paths.csv, "
-      "SVG plots and run.json");
+      "Run a scene (either geometry) and write its run folder: load_travel.csv (streamed during "
+      "the run), thinnest_point.csv, strains_travel_<travel>mm.csv (3D: "
+      "strains_travel_<travel>mm_<line>.csv for the lines x, y, diagonal), fld_points.csv, "
+      "strain_paths.csv (axisymmetric with output.history), stage_<k>.vtu + stages.pvd (3D, "
+      "ParaView), SVG plots and run.json");
   add_scene_args(*run, run_args.scene);
   run->add_option("-o,--output", run_args.output_dir,
                   "Output folder, created if missing (default: the scene's output.directory, "

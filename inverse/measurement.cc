@@ -242,7 +242,9 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
       const std::string body = trim(text.substr(1));
       constexpr std::string_view kTravel = "punch_travel_mm=";  // vshell strains files
       if (body.rfind(kTravel, 0) == 0) {
-        const auto travel = parse_number(trim(body.substr(kTravel.size())));
+        // "# punch_travel_mm=10" (axisymmetric) or "# punch_travel_mm=10, line=x" (3D lines).
+        const std::string value = body.substr(kTravel.size());
+        const auto travel = parse_number(trim(value.substr(0, value.find(','))));
         if (!travel || !(*travel > 0.0) || !std::isfinite(*travel)) {
           throw InputError(fmt::format("{}: '{}' is not a punch travel", where, body));
         }

@@ -43,8 +43,8 @@
 #include "output/svg_plot.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
+#include "common/axisym_comparison.h"
+#include "stepping/shell3d_driver.h"
 
 namespace {
 
@@ -315,7 +315,7 @@ int main(int argc, char** argv) {
                                         ? vs::ShellElementRule::kPaperSelective
                                         : vs::ShellElementRule::kMitc9;
       const auto t0 = std::chrono::steady_clock::now();
-      const vs::shell3d::Shell3dResult r = vs::shell3d::simulate_shell3d(scene);
+      const vs::RunResult r = vs::shell3d::simulate_shell3d(scene);
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double rss = peak_rss_mb();
@@ -327,8 +327,8 @@ int main(int argc, char** argv) {
                             100.0 * c.mean_force_deviation, c.max_eps_thickness_deviation());
         if (csv) {
           csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                             n, rule, friction_text, r.mesh.num_elements(), r.dofs, r.completed(),
-                             wall, r.timings.assembly_s, r.timings.factorisation_s,
+                             n, rule, friction_text, r.shell->mesh.num_elements(), r.dofs, r.completed(),
+                             wall, r.timings.assembly_s, r.timings.linear_solve_s,
                              r.timings.contact_s, r.timings.factorisations, r.steps.size(),
                              r.total_iterations, rss, c.punch_travel_mm, c.force_3d_N,
                              c.force_axisym_N, c.force_deviation, c.mean_force_deviation,
@@ -337,8 +337,8 @@ int main(int argc, char** argv) {
         }
       }
       std::printf("%-6d %-15s %5d %6d %8.2f %8.2f %8.2f %8.3f %6d %6zu %6d %8.1f %s%s\n", n,
-                  rule.c_str(), r.mesh.num_elements(), r.dofs, wall, r.timings.assembly_s,
-                  r.timings.factorisation_s, r.timings.contact_s, r.timings.factorisations,
+                  rule.c_str(), r.shell->mesh.num_elements(), r.dofs, wall, r.timings.assembly_s,
+                  r.timings.linear_solve_s, r.timings.contact_s, r.timings.factorisations,
                   r.steps.size(), r.total_iterations, rss, devs.c_str(),
                   r.completed() ? "" : ("  FAILED: " + r.message).c_str());
       if (args.goal) {

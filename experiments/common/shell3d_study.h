@@ -19,9 +19,9 @@
 #include "harness.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
+#include "common/axisym_comparison.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
 #include "table.h"
 
 namespace vsx {
@@ -134,10 +134,10 @@ inline Shell3dRow run_shell3d_case(const vs::Scene& base, const Shell3dCase& c,
   row.c = c;
   const auto t0 = Clock::now();
   const double c0 = process_cpu_s();
-  const vs::shell3d::Shell3dResult r = vs::shell3d::simulate_shell3d(scene);
+  const vs::RunResult r = vs::shell3d::simulate_shell3d(scene);
   row.wall_s = seconds_since(t0);
   row.cpu_s = process_cpu_s() - c0;
-  row.elements = r.mesh.num_elements();
+  row.elements = r.shell->mesh.num_elements();
   row.dofs = r.dofs;
   row.completed = r.completed();
   row.message = r.message;

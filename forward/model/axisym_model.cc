@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "contact/coulomb.h"
 #include "core/error.h"
 
 namespace vs {
@@ -293,16 +294,14 @@ std::vector<double> AxisymModel::nodal_pressure_forces(
 
 namespace {
 
-// Arctan-regularised Coulomb force limit * 2/pi * atan(v / v0) on the slip velocity v, its secant
-// and tangent stiffness and its potential (the integral of the force over v).
+// The regularised Coulomb law (contact/coulomb.h) into the out-parameters of the assembly.
 void regularised_coulomb(double limit, double vt_rel, double v0, double* force,
                          double* stiff_secant, double* stiff_tangent, double* potential) {
-  const double a = vt_rel / v0;
-  const double at = std::atan(a);
-  *force = limit * kTwoOverPi * at;
-  *stiff_secant = std::abs(a) < 1e-8 ? limit * kTwoOverPi / v0 : *force / vt_rel;
-  *stiff_tangent = limit * kTwoOverPi / (v0 * (1.0 + a * a));
-  *potential = limit * kTwoOverPi * (vt_rel * at - 0.5 * v0 * std::log1p(a * a));
+  const CoulombTerms t = vs::regularised_coulomb(limit, vt_rel, v0);
+  *force = t.force;
+  *stiff_secant = t.secant;
+  *stiff_tangent = t.tangent;
+  *potential = t.potential;
 }
 
 }  // namespace

@@ -19,7 +19,7 @@
 #include "material/hardening.h"
 #include "material/viscous_law.h"
 #include "scene/scene.h"
-#include "solver/block_tridiag.h"
+#include "linalg/block_tridiag.h"
 
 namespace vs {
 

@@ -8,6 +8,7 @@
 
 #include "output/number_format.h"
 #include "output/profile_csv.h"
+#include "model/forming_fields.h"
 
 namespace vs {
 namespace {
@@ -43,7 +44,16 @@ PrincipalStrains in_plane_principal(double eps_meridional, double eps_circumfere
 }
 
 const Profile* final_state(const RunResult& result) {
-  const Profile* last_profile = result.profiles.empty() ? nullptr : &result.profiles.back();
+  const Profile* last_profile = nullptr;
+  if (!result.profiles.empty()) {
+    const std::string& first_line = result.profiles.front().line;
+    for (auto it = result.profiles.rbegin(); it != result.profiles.rend(); ++it) {
+      if (it->line == first_line) {
+        last_profile = &*it;
+        break;
+      }
+    }
+  }
   const Profile* last_history = result.history.empty() ? nullptr : &result.history.back();
   if (last_profile == nullptr) return last_history;
   if (last_history == nullptr) return last_profile;
@@ -51,15 +61,59 @@ const Profile* final_state(const RunResult& result) {
                                                                        : last_profile;
 }
 
-std::string fld_points_csv(const Profile* state) {
-  std::string out = "element,r0_mm,r_mm,eps_major,eps_minor,eps_thickness\n";
-  if (state == nullptr) return out;
+std::vector<FldPoint> fld_points(const Profile* state) {
+  std::vector<FldPoint> points;
+  if (state == nullptr) return points;
   const std::size_t n = profile_rows(*state);
   for (std::size_t i = 0; i < n; ++i) {
     const PrincipalStrains e = principal_at(*state, i);
-    out += fmt::format("{},{},{},{},{},{}\n", i, format_number(at(state->r0_mm, i)),
-                       format_number(at(state->r_mm, i)), format_number(e.major),
-                       format_number(e.minor), format_number(at(state->eps_thickness, i)));
+    FldPoint p;
+    p.element = i;
+    p.r0_mm = p.x0_mm = at(state->r0_mm, i);
+    p.r_mm = at(state->r_mm, i);
+    p.eps_major = e.major;
+    p.eps_minor = e.minor;
+    p.eps_thickness = at(state->eps_thickness, i);
+    p.eps_effective = at(state->eps_effective, i);
+    points.push_back(p);
+  }
+  return points;
+}
+
+std::vector<FldPoint> fld_points(const RunResult& result) {
+  if (!result.shell) return fld_points(final_state(result));
+  std::vector<FldPoint> points;
+  if (result.shell->stages.empty()) return points;
+  const shell3d::ShellMesh& mesh = result.shell->mesh;
+  const ShellStage& stage = result.shell->stages.back();
+  const shell3d::ElementStrains e = shell3d::element_strains(mesh, stage);
+  for (std::size_t k = 0; k < e.major.size(); ++k) {
+    const int centre = mesh.elements[k][8];
+    const Eigen::Vector3d& x0 = mesh.nodes[static_cast<std::size_t>(centre)];
+    const Eigen::Vector3d& x = stage.x[static_cast<std::size_t>(centre)];
+    FldPoint p;
+    p.element = k;
+    p.x0_mm = x0.x();
+    p.y0_mm = x0.y();
+    p.r0_mm = e.r0_mm[k];
+    p.r_mm = std::hypot(x.x(), x.y());
+    p.eps_major = e.major[k];
+    p.eps_minor = e.minor[k];
+    p.eps_thickness = e.thickness[k];
+    p.eps_effective = e.effective[k];
+    points.push_back(p);
+  }
+  return points;
+}
+
+std::string fld_points_csv(const std::vector<FldPoint>& points) {
+  std::string out =
+      "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective\n";
+  for (const FldPoint& p : points) {
+    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", p.element, format_number(p.x0_mm),
+                       format_number(p.y0_mm), format_number(p.r0_mm), format_number(p.r_mm),
+                       format_number(p.eps_major), format_number(p.eps_minor),
+                       format_number(p.eps_thickness), format_number(p.eps_effective));
   }
   return out;
 }

@@ -1,7 +1,9 @@
 // Forming-limit-diagram data: in-plane principal true strains of every element at the final
-// state (fld_points.csv) and the strain paths of a few elements through the history
-// (strain_paths.csv). Axisymmetric membrane strains have no meridional-circumferential shear, so
-// the principal strains are the larger and smaller of the two.
+// state (fld_points.csv, one schema for both geometries) and the strain paths of a few elements
+// through the history (strain_paths.csv, axisymmetric runs with output.history). Axisymmetric
+// membrane strains have no meridional-circumferential shear, so the principal strains are the
+// larger and smaller of the two; 3D ones come from the mid-surface metric at the element centre
+// (shell3d/forming/forming_fields.h).
 #pragma once
 
 #include <cstddef>
@@ -19,14 +21,31 @@ struct PrincipalStrains {
 
 PrincipalStrains in_plane_principal(double eps_meridional, double eps_circumferential);
 
-// The furthest-travelled state the result holds: the last profile or the last history entry,
-// whichever has the larger punch travel (profiles win a tie); nullptr when the result has
-// neither (a run that failed before its first step).
+// The furthest-travelled state the result holds: the last profile of the first line (the
+// meridian; 3D: the line along x) or the last history entry, whichever has the larger punch
+// travel (profiles win a tie); nullptr when the result has neither (a run that failed before
+// its first step).
 const Profile* final_state(const RunResult& result);
 
-// element,r0_mm,r_mm,eps_major,eps_minor,eps_thickness for each element of `state`; only the
-// header when `state` is null.
-std::string fld_points_csv(const Profile* state);
+// One element at the final state. Axisymmetric: the element of the meridian (x0 = r0, y0 = 0,
+// eps_thickness from the thickness, eps_effective at the mid-surface). 3D: the element centre of
+// the meshed part (eps_thickness = -(major + minor), the membrane value).
+struct FldPoint {
+  std::size_t element = 0;
+  double x0_mm = 0.0, y0_mm = 0.0, r0_mm = 0.0;  // initial position of the element centre
+  double r_mm = 0.0;                             // its current distance from the punch axis
+  double eps_major = 0.0, eps_minor = 0.0, eps_thickness = 0.0, eps_effective = 0.0;
+};
+
+// Every element at the final state (3D: the last stage of result.shell); empty when the result
+// has no state.
+std::vector<FldPoint> fld_points(const RunResult& result);
+// The points of one axisymmetric state (empty for null).
+std::vector<FldPoint> fld_points(const Profile* state);
+
+// element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective, one row per
+// point (only the header when there are none).
+std::string fld_points_csv(const std::vector<FldPoint>& points);
 
 // Elements whose strain paths are worth plotting: the thinnest element of `state` and up to
 // `count` - 1 others evenly spaced along the meridian; sorted, without repeats.

@@ -20,15 +20,21 @@ std::string cell(const std::vector<int>& v, std::size_t i) {
 
 }  // namespace
 
-std::string strains_file_name(double punch_travel_mm) {
-  return fmt::format("strains_travel_{:06.2f}mm.csv", punch_travel_mm);
+std::string strains_file_name(double punch_travel_mm, const std::string& line) {
+  if (line == "meridian") return fmt::format("strains_travel_{:06.2f}mm.csv", punch_travel_mm);
+  return fmt::format("strains_travel_{:06.2f}mm_{}.csv", punch_travel_mm, line);
 }
 
-std::vector<const Profile*> profile_stages(const RunResult& result) {
+std::string primary_line(const RunResult& result) {
+  return result.profiles.empty() ? std::string("meridian") : result.profiles.front().line;
+}
+
+std::vector<const Profile*> profile_stages(const RunResult& result, const std::string& line) {
   std::vector<const Profile*> stages;
   for (const Profile& p : result.profiles) {
+    if (!line.empty() && p.line != line) continue;
     const bool repeat = std::any_of(stages.begin(), stages.end(), [&](const Profile* q) {
-      return q->punch_travel_mm == p.punch_travel_mm;
+      return q->punch_travel_mm == p.punch_travel_mm && q->line == p.line;
     });
     if (!repeat) stages.push_back(&p);
   }
@@ -43,7 +49,8 @@ std::size_t profile_rows(const Profile& p) {
 }
 
 std::string profile_csv(const Profile& p) {
-  std::string out = fmt::format("# punch_travel_mm={}\n", format_number(p.punch_travel_mm));
+  std::string out = fmt::format("# punch_travel_mm={}", format_number(p.punch_travel_mm));
+  out += p.line == "meridian" ? std::string("\n") : fmt::format(", line={}\n", p.line);
   out +=
       "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
       "eps_effective,contact\n";

@@ -15,6 +15,9 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"git_describe", program_git_describe()},
                   {"compiler", compiler_version()},
                   {"eigen_version", eigen_version()}};
+  j["geometry"] = result.geometry == Geometry::kShell3d ? "shell3d" : "axisymmetric";
+  j["built"] = result.built;
+  j["dofs"] = result.dofs;
   j["termination"] = s.termination;
   j["message"] = s.message;
   j["warnings"] = result.warnings;
@@ -25,7 +28,8 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
   j["timings"] = {{"total_s", result.timings.total_s},
                   {"assembly_s", result.timings.assembly_s},
                   {"linear_solve_s", result.timings.linear_solve_s},
-                  {"contact_s", result.timings.contact_s}};
+                  {"contact_s", result.timings.contact_s},
+                  {"factorisations", result.timings.factorisations}};
   // NaN (no step at all) becomes null in JSON.
   j["final_punch_travel_mm"] = s.final_punch_travel_mm;
   j["peak_punch_force_N"] = s.peak_punch_force_N;

@@ -32,9 +32,6 @@ PlotSeries line(const std::string& label, const std::vector<double>& x,
   return s;
 }
 
-double at(const std::vector<double>& v, std::size_t i) {
-  return i < v.size() ? v[i] : std::numeric_limits<double>::quiet_NaN();
-}
 
 }  // namespace
 
@@ -56,10 +53,13 @@ SvgFigure load_travel_figure(const Scene& scene, const RunResult& result) {
 
 SvgFigure thickness_strain_figure(const Scene& scene, const RunResult& result) {
   SvgFigure f;
-  f.title = figure_title(scene, result, "thickness strain");
-  f.x_label = "initial radius r0 [mm]";
+  const std::string line_name = primary_line(result);
+  const bool meridian = line_name == "meridian";
+  f.title = figure_title(scene, result,
+                         meridian ? "thickness strain" : "thickness strain along the x axis");
+  f.x_label = meridian ? "initial radius r0 [mm]" : "initial distance from the centre [mm]";
   f.y_label = "thickness strain ln(h/h0) [-]";
-  for (const Profile* p : profile_stages(result)) {
+  for (const Profile* p : profile_stages(result, line_name)) {
     f.series.push_back(line(travel_label(p->punch_travel_mm), p->r0_mm, p->eps_thickness));
   }
   return f;
@@ -82,11 +82,14 @@ SvgFigure strains_figure(const Scene& scene, const RunResult& result) {
 
 SvgFigure deformed_stages_figure(const Scene& scene, const RunResult& result) {
   SvgFigure f;
-  f.title = figure_title(scene, result, "deformed meridian");
+  const std::string line_name = primary_line(result);
+  f.title = figure_title(
+      scene, result,
+      line_name == "meridian" ? "deformed meridian" : "deformed section along the x axis");
   f.x_label = "radius r [mm]";
   f.y_label = "height z [mm]";
   f.equal_aspect = true;
-  for (const Profile* p : profile_stages(result)) {
+  for (const Profile* p : profile_stages(result, line_name)) {
     f.series.push_back(line(travel_label(p->punch_travel_mm), p->node_r_mm, p->node_z_mm));
   }
   return f;
@@ -102,13 +105,9 @@ SvgFigure fld_figure(const Scene& scene, const RunResult& result,
   final_points.label = "elements, final state";
   final_points.style = SeriesStyle::kMarkers;
   final_points.colour = 6;  // black: the paths take the coloured entries
-  if (const Profile* p = final_state(result)) {
-    for (std::size_t i = 0; i < profile_rows(*p); ++i) {
-      const PrincipalStrains e =
-          in_plane_principal(at(p->eps_meridional, i), at(p->eps_circumferential, i));
-      final_points.x.push_back(e.minor);
-      final_points.y.push_back(e.major);
-    }
+  for (const FldPoint& p : fld_points(result)) {
+    final_points.x.push_back(p.eps_minor);
+    final_points.y.push_back(p.eps_major);
   }
   f.series.push_back(std::move(final_points));
   for (std::size_t k = 0; k < paths.size(); ++k) {

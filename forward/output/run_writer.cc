@@ -9,9 +9,11 @@
 #include "output/profile_csv.h"
 #include "output/run_manifest.h"
 #include "output/run_plots.h"
+#include "output/shell_stage_vtu.h"
 #include "output/step_csv.h"
 #include "output/svg_plot.h"
 #include "output/text_file.h"
+#include "output/vtu_writer.h"
 
 namespace vs {
 namespace {
@@ -46,8 +48,8 @@ class FolderWriter {
 };
 
 // Two travels that round to the same two decimals get "_2", "_3"... rather than overwrite.
-std::string unique_strains_name(const FolderWriter& out, double punch_travel_mm) {
-  const std::string base = strains_file_name(punch_travel_mm);
+std::string unique_strains_name(const FolderWriter& out, const Profile& p) {
+  const std::string base = strains_file_name(p.punch_travel_mm, p.line);
   std::string name = base;
   for (int k = 2; out.has(name); ++k) {
     name = base.substr(0, base.size() - 4) + fmt::format("_{}.csv", k);
@@ -64,11 +66,24 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
   out.text("load_travel.csv", load_travel_csv(result.steps));
   out.text("thinnest_point.csv", thinnest_point_csv(result.steps));
   for (const Profile* p : profile_stages(result)) {
-    out.text(unique_strains_name(out, p->punch_travel_mm), profile_csv(*p));
+    out.text(unique_strains_name(out, *p), profile_csv(*p));
+  }
+  if (result.shell) {
+    // ParaView series: each output stage once (the final state often repeats the last one).
+    const ShellFields& shell = *result.shell;
+    std::vector<PvdEntry> series;
+    for (std::size_t k = 0; k < shell.stages.size(); ++k) {
+      const ShellStage& st = shell.stages[k];
+      if (k > 0 && st.punch_travel_mm == shell.stages[k - 1].punch_travel_mm) continue;
+      const std::string vtu = fmt::format("stage_{}.vtu", series.size());
+      out.text(vtu, stage_vtu(shell.mesh, st, scene.blank.thickness_mm));
+      series.push_back({st.punch_travel_mm, vtu});
+    }
+    out.text("stages.pvd", render_pvd(series));
   }
 
   const Profile* state = final_state(result);
-  out.text("fld_points.csv", fld_points_csv(state));
+  out.text("fld_points.csv", fld_points_csv(fld_points(result)));
   std::vector<StrainPath> paths;
   if (state != nullptr && !result.history.empty()) {
     paths = strain_paths(result, strain_path_elements(*state, options.strain_path_elements));

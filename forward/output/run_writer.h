@@ -1,7 +1,11 @@
-// Writes a run folder from a Scene and its RunResult:
+// Writes the run folder of either geometry from a Scene and its RunResult, with the same names,
+// columns and units:
 //   load_travel.csv, thinnest_point.csv          per step
-//   strains_travel_<travel>mm.csv                per profile
+//   strains_travel_<travel>mm.csv                per profile (axisymmetric: the meridian)
+//   strains_travel_<travel>mm_<line>.csv         per profile of a 3D run (lines x, y, diagonal;
+//                                                a full blank adds x_neg, y_neg, diagonal_neg)
 //   fld_points.csv, strain_paths.csv             forming limit diagram data
+//   stage_<k>.vtu, stages.pvd                    3D: ParaView series of the output stages
 //   load_travel.svg, thickness_strain.svg, strains.svg, deformed_stages.svg, fld.svg
 //                                                if scene.output.plots
 //   run.json                                     manifest (written last, lists all the above)

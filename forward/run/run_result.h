@@ -1,9 +1,16 @@
-// What a forward run returns: per-step scalars, strain distributions at the requested travels,
-// optional full history, termination and timings. Plain data; writers live in output/.
+// What a forward run returns, for both geometries: per-step scalars, strain profiles at the
+// requested travels, optional full history (axisymmetric), the nodal fields of the 3D sheet at
+// the output travels, termination, what was built, and timings. Plain data; writers live in
+// output/.
 #pragma once
 
+#include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "scene/scene.h"
+#include "mesh/shell_mesh.h"
 
 namespace vs {
 
@@ -25,9 +32,14 @@ struct StepRecord {
   double rim_draw_in_mm = 0.0;    // initial minus current rim radius
 };
 
-// Element-midpoint fields along the meridian at one instant.
+// Fields along one line of the sheet at one instant: the meridian of an axisymmetric run
+// (element midpoints), or a line through the centre of a 3D blank (nodes; the forces are empty
+// there).
 struct Profile {
   double punch_travel_mm = 0.0;
+  // "meridian" (axisymmetric); 3D: "x" (along the x axis, y = 0), "y" (x = 0), "diagonal"
+  // (x = y), and for a full blank also "x_neg", "y_neg", "diagonal_neg" (the other halves).
+  std::string line = "meridian";
   std::vector<double> r0_mm;  // initial radius of the element midpoint
   std::vector<double> r_mm;   // current radius
   std::vector<double> z_mm;   // current height
@@ -57,15 +69,38 @@ enum class Termination {
 
 struct RunTimings {
   double total_s = 0.0;
-  double assembly_s = 0.0;
-  double linear_solve_s = 0.0;
-  double contact_s = 0.0;
+  double assembly_s = 0.0;      // element loops: matrices, residuals, potentials
+  double linear_solve_s = 0.0;  // factorisations and triangular solves (axisymmetric: the solves)
+  double contact_s = 0.0;       // contact search, projection and the contact-event step
+  int factorisations = 0;       // numeric factorisations (3D)
+};
+
+// The 3D sheet at one instant (nodal fields of the meshed part).
+struct ShellStage {
+  double punch_travel_mm = 0.0;
+  std::vector<Eigen::Vector3d> x;     // mid-surface nodes [mm]
+  std::vector<double> thickness_mm;   // per node
+  std::vector<int> contact_tool;      // per node: tool index, -1 free
+  std::vector<double> eps_effective;  // per element: mean over its mid-thickness flow points
+};
+
+// What only a 3D run has: its initial mesh and the sheet at the output travels and at the end.
+struct ShellFields {
+  shell3d::ShellMesh mesh;  // the meshed part: quarter or full blank
+  std::vector<ShellStage> stages;
 };
 
 struct RunResult {
+  Geometry geometry = Geometry::kAxisymmetric;
+  // What the solver built for this scene, one line each (model, unknowns, linear solver,
+  // contact and friction terms, blank holder, ...), for run.json.
+  std::vector<std::string> built;
+  int dofs = 0;
   std::vector<StepRecord> steps;
-  std::vector<Profile> profiles;  // at process.output_travels_mm (in that order) and the end
-  std::vector<Profile> history;   // every step, if output.history
+  // At process.output_travels_mm (in that order) and the end; 3D: one per line at each of
+  // those travels, the lines in the order of Profile::line.
+  std::vector<Profile> profiles;
+  std::vector<Profile> history;  // every step, if output.history
   Termination termination = Termination::kCompleted;
   std::string message;
   std::vector<std::string> warnings;  // trust caveats (e.g. elements shorter than the thickness)
@@ -78,6 +113,7 @@ struct RunResult {
   // of their 2-norm condition numbers: squared ratio of the Cholesky pivots).
   double max_condition_estimate = 1.0;
   RunTimings timings;
+  std::shared_ptr<const ShellFields> shell;  // 3D runs only
   bool completed() const { return termination == Termination::kCompleted; }
 };
 

@@ -137,8 +137,9 @@ std::vector<KeySpec> build_keys() {
            "(axisymmetric only)."))
       .geometry = "axisymmetric";
   add(choice("blank", "edge", enum_field<&blank, &BlankSpec::edge>(), {"pinned", "clamped", "free"},
-             "Rim condition: pinned (no radial/axial motion, rotation free), clamped (also no "
-             "rotation), free (draws in; needs a die)."));
+             "Edge (rim) condition: pinned (no motion, rotation free; in 3D also none along the "
+             "edge), clamped (also no rotation), free (draws in; needs a die). See 'Edge "
+             "conditions'."));
   add(choice("blank", "shape", enum_field<&blank, &BlankSpec::shape>(), {"circle", "square"},
              "Blank outline (shell3d only): circle of radius radius_mm, or square of half side "
              "radius_mm centred on the punch axis."))

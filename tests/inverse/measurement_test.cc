@@ -133,6 +133,15 @@ TEST(Measurement, ReadsVshellOutputFilesAsWritten) {
   const Measurement circ = read_measurement_csv((dir / "strains_travel_010.00mm.csv").string(),
                                                 MeasurementKind::kCircumferentialStrain);
   EXPECT_EQ(circ.y[1], 0.03);
+  write_file(dir / "strains_travel_010.00mm_x.csv",  // a 3D run's profile along one line
+             "# punch_travel_mm=10, line=x\n"
+             "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
+             "eps_effective,contact\n"
+             "0.5,0.6,10,0.8,0.05,0.04,-0.09,0.09,1\n1.5,1.7,9.9,0.81,0.05,0.03,-0.08,0.08,1\n");
+  EXPECT_EQ(read_measurement_csv((dir / "strains_travel_010.00mm_x.csv").string(),
+                                 MeasurementKind::kThicknessStrain)
+                .travel_mm,
+            10.0);
 }
 
 TEST(Measurement, ColumnMappingRenamesAndIgnoresTheRest) {

@@ -31,11 +31,14 @@ TEST(Fld, FinalStateIsTheFurthestAlong) {
 
 TEST(Fld, PointsCsvHasEveryElement) {
   const Profile p = test::profile(2.0);
-  const std::vector<std::string> lines = test::lines(fld_points_csv(&p));
+  const std::vector<std::string> lines = test::lines(fld_points_csv(fld_points(&p)));
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[0], "element,r0_mm,r_mm,eps_major,eps_minor,eps_thickness");
-  EXPECT_EQ(lines[2], "1,15,15.3,0.2,0.05,-0.25");
-  EXPECT_EQ(test::lines(fld_points_csv(nullptr)).size(), 1u);
+  // One schema for both geometries (x0, y0: initial centre; an axisymmetric element sits on the
+  // x axis at its initial radius).
+  EXPECT_EQ(lines[0],
+            "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective");
+  EXPECT_EQ(lines[2].substr(0, lines[2].rfind(',')), "1,15,0,15,15.3,0.2,0.05,-0.25");
+  EXPECT_EQ(test::lines(fld_points_csv(fld_points(nullptr))).size(), 1u);
 }
 
 TEST(Fld, PathElementsIncludeTheThinnest) {

@@ -1,4 +1,4 @@
-#include "solver/block_tridiag.h"
+#include "linalg/block_tridiag.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "element/axisym2.h"
-#include "solver/block_tridiag.h"
+#include "linalg/block_tridiag.h"
 
 namespace vs::test {
 

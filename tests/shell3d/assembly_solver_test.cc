@@ -46,7 +46,7 @@ TEST(SparseSpdSolver, CholmodAndLdltAgreeAndReuseTheAnalysis) {
     ShellModel model(mesh);
     for (int i : mesh.set("y1")) model.clamp(i);
     auto o = bench::options(Shell9Rule::kMitc9);
-    o.solver = s == 0 ? SolverKind::kCholmodSupernodal : SolverKind::kSimplicialLDLT;
+    o.solver = s == 0 ? SparseSolverKind::kCholmodSupernodal : SparseSolverKind::kSimplicialLDLT;
     LinearShellProblem p(model, Shell9Material::Elastic(3e6, 0.3), o);
     p.add_point_load(mesh.nearest_node(Vec3(0, 0, 300)), Vec3(0, 0, -1));
     solutions[s] = p.solve();
@@ -63,10 +63,10 @@ TEST(SparseSpdSolver, FallsBackToLdltWhenCholmodFails) {
   std::vector<Eigen::Triplet<double>> t = {
       {0, 0, 2.0}, {1, 1, -1.0}, {2, 2, 3.0}, {0, 2, 0.5}, {2, 0, 0.5}};
   A.setFromTriplets(t.begin(), t.end());
-  SparseSpdSolver s(SolverKind::kCholmodSupernodal);
+  SparseSpdSolver s(SparseSolverKind::kCholmodSupernodal);
   s.analyze(A);
   ASSERT_TRUE(s.factorize(A));
-  EXPECT_EQ(s.active(), SolverKind::kSimplicialLDLT);
+  EXPECT_EQ(s.active(), SparseSolverKind::kSimplicialLDLT);
   const Eigen::VectorXd b = Eigen::Vector3d(1.0, 2.0, 3.0);
   EXPECT_LT((A * s.solve(b) - b).norm(), 1e-12);
 }

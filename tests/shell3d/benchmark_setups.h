@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "shell3d/linear_shell.h"
-#include "shell3d/mesh_generators.h"
-#include "shell3d/quadrature.h"
+#include "model/linear_shell.h"
+#include "mesh/mesh_generators.h"
+#include "element/quadrature.h"
 
 namespace vs::shell3d::bench {
 

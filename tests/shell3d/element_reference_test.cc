@@ -11,9 +11,9 @@
 #include <optional>
 
 #include "benchmark_setups.h"
-#include "shell3d/mitc9.h"
-#include "shell3d/quadrature.h"
-#include "shell3d/shell9.h"
+#include "element/mitc9.h"
+#include "element/quadrature.h"
+#include "element/shell9.h"
 
 namespace vs::shell3d {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "benchmark_setups.h"
-#include "shell3d/shell9.h"
+#include "element/shell9.h"
 
 namespace vs::shell3d {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
+#include "common/axisym_comparison.h"
+#include "stepping/shell3d_driver.h"
 
 namespace vs::shell3d {
 namespace {
@@ -46,11 +46,11 @@ Scene deep_drawing_3d(double holder_force_factor) {
 }
 
 // Initial minus current radius of the edge node on the symmetry line y = 0.
-double draw_in_along_y0(const Shell3dResult& r) {
-  for (int node : r.mesh.set("edge")) {
-    const Eigen::Vector3d& p0 = r.mesh.nodes[node];
+double draw_in_along_y0(const RunResult& r) {
+  for (int node : r.shell->mesh.set("edge")) {
+    const Eigen::Vector3d& p0 = r.shell->mesh.nodes[node];
     if (std::abs(p0.y()) > 1e-9 * p0.norm()) continue;
-    const Eigen::Vector3d& x = r.stages.back().x[node];
+    const Eigen::Vector3d& x = r.shell->stages.back().x[node];
     return p0.norm() - std::hypot(x.x(), x.y());
   }
   ADD_FAILURE() << "no edge node on y = 0";
@@ -65,7 +65,7 @@ struct Outcome {
 
 Outcome run_both(double holder_force_factor) {
   const Scene s = deep_drawing_3d(holder_force_factor);
-  const Shell3dResult shell = simulate_shell3d(s);
+  const RunResult shell = simulate_shell3d(s);
   const RunResult axi = simulate(axisymmetric_twin(s, kTwinElements));
   Outcome o;
   o.completed = shell.completed() && axi.completed();

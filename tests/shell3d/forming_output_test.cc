@@ -6,8 +6,8 @@
 #include <string>
 
 #include "output/vtu_writer.h"
-#include "shell3d/forming/forming_fields.h"
-#include "shell3d/mesh_generators.h"
+#include "model/forming_fields.h"
+#include "mesh/mesh_generators.h"
 
 namespace vs::shell3d {
 namespace {

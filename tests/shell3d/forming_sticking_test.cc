@@ -20,10 +20,10 @@
 
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/axisym_comparison.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
-#include "shell3d/forming/forming_model.h"
+#include "common/axisym_comparison.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
+#include "model/forming_model.h"
 
 namespace vs::shell3d {
 namespace {
@@ -44,8 +44,8 @@ Scene sticking_scene(int n, double travel, const std::vector<double>& outputs) {
 
 // Largest initial radius of a node on y = 0 touching a tool / of an axisymmetric element in
 // contact.
-double stuck_radius_3d(const Shell3dResult& r, const ShellStage& st, double h0) {
-  const LineProfile p = line_profile(r.mesh, st, "y0", h0);
+double stuck_radius_3d(const RunResult& r, const ShellStage& st, double h0) {
+  const LineProfile p = line_profile(r.shell->mesh, st, "y0", h0);
   double rc = 0.0;
   for (std::size_t i = 0; i < p.nodes.size(); ++i)
     if (p.contact_tool[i] >= 0) rc = std::max(rc, p.r0_mm[i]);
@@ -104,7 +104,7 @@ TEST(Forming3dSticking, MatchesAxisymmetricSolverAt8mm) {
   Scene s = sticking_scene(4, 8.0, {6.0, 8.0});
   // The 0.5 mm grid keeps the test at ~30 s (experiments/05_shell3d has the finer steps).
   s.numerics.max_travel_increment_per_length = 1e9;
-  const Shell3dResult shell = simulate_shell3d(s);
+  const RunResult shell = simulate_shell3d(s);
   ASSERT_TRUE(shell.completed()) << shell.message;
   const RunResult axi = simulate(axisymmetric_twin(s, 30));
   ASSERT_TRUE(axi.completed()) << axi.message;
@@ -117,7 +117,7 @@ TEST(Forming3dSticking, MatchesAxisymmetricSolverAt8mm) {
         << "travel " << c.punch_travel_mm << ": mean force 3D " << c.mean_force_3d_N
         << " N, axisymmetric " << c.mean_force_axisym_N << " N";
     EXPECT_LT(c.max_eps_thickness_deviation(), 0.025) << "travel " << c.punch_travel_mm;
-    const double r3 = stuck_radius_3d(shell, shell.stages[k], h0);
+    const double r3 = stuck_radius_3d(shell, shell.shell->stages[k], h0);
     const double ra = stuck_radius_axi(axi.profiles[k]);
     EXPECT_GT(r3, ra - 3.7 - 0.2) << "travel " << c.punch_travel_mm;
     EXPECT_LT(r3, ra + 3.7 + 0.2) << "travel " << c.punch_travel_mm;
@@ -159,7 +159,7 @@ TEST(Forming3dSticking, DISABLED_DiagnoseSticking) {
                 std::min(s.numerics.max_travel_increment_mm,
                          s.numerics.max_travel_increment_per_length * shortest_element_size(m)));
   }
-  Shell3dRunOptions opt;
+  RunOptions opt;
   opt.verbose = env("VS_DIAG_VERBOSE", 0) != 0;
   if (env("VS_DIAG_STEPS", 0) != 0) {
     opt.on_step = [](const StepRecord& r) {
@@ -167,13 +167,13 @@ TEST(Forming3dSticking, DISABLED_DiagnoseSticking) {
                   r.punch_force_N, r.contact_nodes, r.iterations, r.cutbacks);
     };
   }
-  const Shell3dResult shell = simulate_shell3d(s, opt);
+  const RunResult shell = simulate_shell3d(s, opt);
   std::printf("3D: %s, %zu steps, %d iterations, %.1f s\n", shell.message.c_str(),
               shell.steps.size(), shell.total_iterations, shell.timings.total_s);
   const auto cmp = compare_with_axisymmetric(s, shell, axi);
   for (const TravelComparison& c : cmp) {
     const ShellStage* st = nullptr;
-    for (const ShellStage& x : shell.stages)
+    for (const ShellStage& x : shell.shell->stages)
       if (std::abs(x.punch_travel_mm - c.punch_travel_mm) < 1e-9) st = &x;
     const Profile* pa = nullptr;
     for (const Profile& p : axi.profiles)
@@ -185,7 +185,7 @@ TEST(Forming3dSticking, DISABLED_DiagnoseSticking) {
         100 * c.mean_force_deviation, c.max_eps_thickness_deviation(),
         stuck_radius_3d(shell, *st, h0), stuck_radius_axi(*pa));
     if (env("VS_DIAG_PROFILES", 1) != 0) {
-      const LineProfile p = line_profile(shell.mesh, *st, "y0", h0);
+      const LineProfile p = line_profile(shell.shell->mesh, *st, "y0", h0);
       FormingModel m(s);
       FormingState fs = m.initial_state();
       fs.tool_offset[m.punch_index()] = Eigen::Vector2d(0.0, c.punch_travel_mm);

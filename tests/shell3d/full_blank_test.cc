@@ -19,14 +19,15 @@
 
 #include "mesh_area.h"
 #include "scene/load_scene.h"
-#include "shell3d/forming/forming_driver.h"
-#include "shell3d/forming/forming_fields.h"
-#include "shell3d/forming/forming_mesh.h"
-#include "shell3d/forming/forming_model.h"
-#include "shell3d/forming/forming_writer.h"
-#include "shell3d/mesh_generators.h"
-#include "shell3d/shell9.h"
-#include "shell3d/shell_model.h"
+#include "stepping/shell3d_driver.h"
+#include "model/forming_fields.h"
+#include "mesh/forming_mesh.h"
+#include "model/forming_model.h"
+#include "output/run_writer.h"
+#include "output/shell_stage_vtu.h"
+#include "mesh/mesh_generators.h"
+#include "element/shell9.h"
+#include "model/shell_model.h"
 
 namespace vs::shell3d {
 namespace {
@@ -166,13 +167,13 @@ TEST(FullBlankModel, ConstraintsWithoutSymmetryPlanes) {
   }
 }
 
-Shell3dResult run(const Scene& s) {
-  const Shell3dResult r = simulate_shell3d(s);
+RunResult run(const Scene& s) {
+  const RunResult r = simulate_shell3d(s);
   EXPECT_TRUE(r.completed()) << r.message;
   return r;
 }
 
-double force_at(const Shell3dResult& r, double travel) {
+double force_at(const RunResult& r, double travel) {
   for (const StepRecord& rec : r.steps)
     if (std::abs(rec.punch_travel_mm - travel) < 1e-9) return rec.punch_force_N;
   ADD_FAILURE() << "no step at travel " << travel;
@@ -181,12 +182,12 @@ double force_at(const Shell3dResult& r, double travel) {
 
 // Largest |eps_thickness| difference between the full run's profile `full_line` and the quarter
 // run's `quarter_line` (the same initial positions up to the mirror).
-double profile_difference(const Scene& scene, const Shell3dResult& quarter,
-                          const std::string& quarter_line, const Shell3dResult& full,
+double profile_difference(const Scene& scene, const RunResult& quarter,
+                          const std::string& quarter_line, const RunResult& full,
                           const std::string& full_line, std::size_t stage) {
   const double h0 = scene.blank.thickness_mm;
-  const LineProfile q = line_profile(quarter.mesh, quarter.stages.at(stage), quarter_line, h0);
-  const LineProfile f = line_profile(full.mesh, full.stages.at(stage), full_line, h0);
+  const LineProfile q = line_profile(quarter.shell->mesh, quarter.shell->stages.at(stage), quarter_line, h0);
+  const LineProfile f = line_profile(full.shell->mesh, full.shell->stages.at(stage), full_line, h0);
   EXPECT_EQ(q.nodes.size(), f.nodes.size()) << full_line;
   double d = 0.0;
   for (std::size_t i = 0; i < std::min(q.nodes.size(), f.nodes.size()); ++i) {
@@ -203,11 +204,11 @@ constexpr double kStrainTolerance = 1e-5;  // absolute, thickness strain
 void expect_full_matches_quarter(const Scene& quarter_scene) {
   Scene full_scene = quarter_scene;
   full_scene.blank.symmetry = BlankSymmetry::kFull;
-  const Shell3dResult quarter = run(quarter_scene);
-  const Shell3dResult full = run(full_scene);
+  const RunResult quarter = run(quarter_scene);
+  const RunResult full = run(full_scene);
   ASSERT_TRUE(quarter.completed() && full.completed());
-  EXPECT_EQ(full.mesh.num_elements(), 4 * quarter.mesh.num_elements());
-  ASSERT_EQ(quarter.stages.size(), full.stages.size());
+  EXPECT_EQ(full.shell->mesh.num_elements(), 4 * quarter.shell->mesh.num_elements());
+  ASSERT_EQ(quarter.shell->stages.size(), full.shell->stages.size());
   for (std::size_t k = 0; k < quarter_scene.process.output_travels_mm.size(); ++k) {
     const double travel = quarter_scene.process.output_travels_mm[k];
     const double fq = force_at(quarter, travel), ff = force_at(full, travel);
@@ -288,20 +289,24 @@ TEST(FullBlankForming, OutputsCoverTheWholeBlank) {
   s.process.punch_travel_mm = 1.0;
   s.process.output_travels_mm = {1.0};
   s.numerics.max_travel_increment_per_length = 1e9;
-  const Shell3dResult r = run(s);
+  const RunResult r = run(s);
   ASSERT_TRUE(r.completed());
-  const std::string csv = profiles_csv(r.mesh, r.stages.back(), s.blank.thickness_mm);
-  for (const char* line : {"y0,", "x0,", "diagonal,", "y0_neg,", "x0_neg,", "diagonal_neg,"})
-    EXPECT_NE(csv.find(std::string("\n") + line), std::string::npos) << line;
-  const std::string vtu = stage_vtu(r.mesh, r.stages.back(), s.blank.thickness_mm);
+  std::vector<std::string> lines;
+  for (const Profile& p : r.profiles)
+    if (p.punch_travel_mm == r.profiles.back().punch_travel_mm) lines.push_back(p.line);
+  EXPECT_EQ(lines, (std::vector<std::string>{"x", "y", "diagonal", "x_neg", "y_neg",
+                                             "diagonal_neg", "x", "y", "diagonal", "x_neg",
+                                             "y_neg", "diagonal_neg"}));
+  const std::string vtu = stage_vtu(r.shell->mesh, r.shell->stages.back(), s.blank.thickness_mm);
   EXPECT_NE(vtu.find("NumberOfCells=\"12\""), std::string::npos);
   const std::filesystem::path dir =
       std::filesystem::path(::testing::TempDir()) / "vs_full_blank_outputs";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  write_shell3d_run_folder(s, r, dir.string());
-  for (const char* f : {"load_travel.csv", "profiles_travel_1.00mm.csv", "fld_points.csv",
-                        "stage_0.vtu", "stages.pvd"})
+  write_run_folder(s, r, dir.string());
+  for (const char* f : {"load_travel.csv", "strains_travel_001.00mm_x.csv",
+                        "strains_travel_001.00mm_diagonal_neg.csv", "fld_points.csv",
+                        "stage_0.vtu", "stages.pvd", "run.json"})
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
   EXPECT_GT(r.steps.back().punch_force_N, 0.0);
 }

@@ -1,6 +1,6 @@
 // The 3-component Hill point law (forward/shell3d/hill_plane_stress.h): closed-form stress states,
 // Lankford ratio, planar isotropy, agreement with the axisymmetric 2x2 law, consistent tangent.
-#include "shell3d/hill_plane_stress.h"
+#include "material/hill_plane_stress.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Mid-surface area of a 9-node mesh (sum of the element areas), shared by the mesh tests.
 #pragma once
 
-#include "shell3d/shell9.h"
-#include "shell3d/shell_mesh.h"
-#include "shell3d/shell_model.h"
+#include "element/shell9.h"
+#include "mesh/shell_mesh.h"
+#include "model/shell_model.h"
 
 namespace vs::shell3d::test {
 

@@ -5,9 +5,9 @@
 #include <numbers>
 
 #include "mesh_area.h"
-#include "shell3d/mesh_generators.h"
-#include "shell3d/shell9.h"
-#include "shell3d/shell_model.h"
+#include "mesh/mesh_generators.h"
+#include "element/shell9.h"
+#include "model/shell_model.h"
 
 namespace vs::shell3d {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "scene/load_scene.h"
-#include "shell3d/forming/forming_model.h"
-#include "shell3d/sparse_solver.h"
+#include "model/forming_model.h"
+#include "linalg/sparse_spd_solver.h"
 
 namespace vs::shell3d {
 namespace {

@@ -1,0 +1,505 @@
+#include "element/shell9.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <cassert>
+#include <cmath>
+#include <vector>
+
+#include "element/quadrature.h"
+
+namespace vs::shell3d {
+
+Shell9Material Shell9Material::Elastic(double young, double poisson) {
+  Shell9Material m;
+  m.young = young;
+  m.poisson = poisson;
+  return m;
+}
+
+Shell9Material Shell9Material::Viscous(const HillPlaneStressLaw& law, double shear_viscosity) {
+  Shell9Material m;
+  m.viscous = true;
+  m.law = &law;
+  m.shear_viscosity = shear_viscosity;
+  return m;
+}
+
+double Shell9Material::shear_reference() const {
+  return viscous ? shear_viscosity : young / (2.0 * (1.0 + poisson));
+}
+
+int shell9_inplane_points(Shell9Rule rule) { return rule == Shell9Rule::kReduced ? 4 : 9; }
+
+namespace {
+
+// Gauss-Legendre rules of 2 and 3 points, built once (gauss_legendre allocates).
+struct Gauss {
+  std::array<double, 3> x{}, w{};
+  int n = 0;
+};
+Gauss make_gauss(int n) {
+  const Rule1D r = gauss_legendre(n);
+  Gauss g;
+  g.n = n;
+  for (int i = 0; i < n; ++i) g.x[i] = r.x[i], g.w[i] = r.w[i];
+  return g;
+}
+const Gauss& gauss(int n) {
+  static const Gauss g2 = make_gauss(2), g3 = make_gauss(3);
+  return n == 2 ? g2 : g3;
+}
+
+}  // namespace
+
+double shell9_area(const Shell9Geometry& g) {
+  const Gauss& q = gauss(3);
+  double area = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Shape9 sh = lagrange9(q.x[i], q.x[j]);
+      Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
+      for (int a = 0; a < 9; ++a) {
+        gr += sh.dr(a) * g.x[a];
+        gs += sh.ds(a) * g.x[a];
+      }
+      area += q.w[i] * q.w[j] * gr.cross(gs).norm();
+    }
+  return area;
+}
+
+namespace {
+
+// ---- Covariant strain-rate operator as a polynomial in the thickness coordinate ----
+//
+// With c_a = h_a / 2 the point x(r, s, t) = sum N_a (x_a + t c_a V3_a) has
+//   g_r(t) = gr0 + t gr1,  gr0 = sum N_a,r x_a,  gr1 = sum N_a,r c_a V3_a   (g_s alike),
+//   g_t    = sum N_a c_a V3_a                                               (independent of t),
+// and the velocity u = sum N_a (v_a + t c_a dV3_a). The rows of covariant_B
+// (shell9_kinematics.h), [e_rr, e_ss, 2e_rs, 2e_rt, 2e_st], are products of these vectors with
+// N_a, N_a,r, N_a,s and (director columns) one more factor t c_a, so B(t) = B0 + t B1 + t^2 B2:
+//   velocity columns of node a (times the nodal velocity frame Q_a, if any):
+//     B0: Nr gr0, Ns gs0, Ns gr0 + Nr gs0, Nr gt, Ns gt      B1: Nr gr1, Ns gs1, Ns gr1 + Nr gs1,
+//     0, 0                                                    B2: 0
+//   director-rate columns (times P_a):
+//     B0: 0, 0, 0, c N gr0, c N gs0
+//     B1: c Nr gr0, c Ns gs0, c (Ns gr0 + Nr gs0), c (N gr1 + Nr gt), c (N gs1 + Ns gt)
+//     B2: c Nr gr1, c Ns gs1, c (Ns gr1 + Nr gs1), 0, 0
+// (rows of the 5 x 3 blocks written as row vectors). The MITC9 assumed strains interpolate the
+// tying values in (r, s) with weights independent of t, so they are quadratic in t as well: the
+// tying points are evaluated once per element, not once per thickness point.
+constexpr int kMaxDof = 54;
+using BMat = Eigen::Matrix<double, 5, Eigen::Dynamic, Eigen::ColMajor, 5, kMaxDof>;
+using VecD = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxDof, 1>;
+
+struct SurfacePoint {
+  Vec3 gr0, gr1, gs0, gs1, gt;
+  double h = 0.0;
+};
+
+struct CovPoly {
+  BMat B[3];
+};
+
+SurfacePoint surface_point(const Shell9Geometry& g, const Shape9& sh) {
+  SurfacePoint p;
+  p.gr0 = p.gr1 = p.gs0 = p.gs1 = p.gt = Vec3::Zero();
+  for (int a = 0; a < 9; ++a) {
+    const double c = 0.5 * g.thickness[a];
+    const Vec3 cv = c * g.director[a];
+    p.gr0 += sh.dr(a) * g.x[a];
+    p.gs0 += sh.ds(a) * g.x[a];
+    p.gr1 += sh.dr(a) * cv;
+    p.gs1 += sh.ds(a) * cv;
+    p.gt += sh.N(a) * cv;
+    p.h += sh.N(a) * g.thickness[a];
+  }
+  return p;
+}
+
+void covariant_poly(const Shell9Geometry& g, const Shape9& sh, const SurfacePoint& p, int n,
+                    CovPoly* out) {
+  for (BMat& B : out->B) B.setZero(5, n);
+  int off = 0;
+  for (int a = 0; a < 9; ++a) {
+    const double c = 0.5 * g.thickness[a];
+    const double Nr = sh.dr(a), Ns = sh.ds(a), N = sh.N(a);
+    // Velocity columns: g^T Q_a = (Q_a^T g)^T.
+    Vec3 r0 = p.gr0, r1 = p.gr1, s0 = p.gs0, s1 = p.gs1, tt = p.gt;
+    if (g.has_vel_frame) {
+      const Mat3 Qt = g.vel_frame[a].transpose();
+      r0 = Qt * p.gr0;
+      r1 = Qt * p.gr1;
+      s0 = Qt * p.gs0;
+      s1 = Qt * p.gs1;
+      tt = Qt * p.gt;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int col = off + k;
+      out->B[0](0, col) = Nr * r0(k);
+      out->B[0](1, col) = Ns * s0(k);
+      out->B[0](2, col) = Ns * r0(k) + Nr * s0(k);
+      out->B[0](3, col) = Nr * tt(k);
+      out->B[0](4, col) = Ns * tt(k);
+      out->B[1](0, col) = Nr * r1(k);
+      out->B[1](1, col) = Ns * s1(k);
+      out->B[1](2, col) = Ns * r1(k) + Nr * s1(k);
+    }
+    // Director-rate columns: g^T P_a = (P_a^T g)^T.
+    const int nr = g.n_rot[a];
+    const Mat3& P = g.rot_map[a];
+    for (int k = 0; k < nr; ++k) {
+      const Vec3 pk = P.col(k);
+      const double R0 = pk.dot(p.gr0), R1 = pk.dot(p.gr1), S0 = pk.dot(p.gs0), S1 = pk.dot(p.gs1),
+                   Tt = pk.dot(p.gt);
+      const int col = off + 3 + k;
+      out->B[0](3, col) = c * N * R0;
+      out->B[0](4, col) = c * N * S0;
+      out->B[1](0, col) = c * Nr * R0;
+      out->B[1](1, col) = c * Ns * S0;
+      out->B[1](2, col) = c * (Ns * R0 + Nr * S0);
+      out->B[1](3, col) = c * (N * R1 + Nr * Tt);
+      out->B[1](4, col) = c * (N * S1 + Ns * Tt);
+      out->B[2](0, col) = c * Nr * R1;
+      out->B[2](1, col) = c * Ns * S1;
+      out->B[2](2, col) = c * (Ns * R1 + Nr * S1);
+    }
+    off += 3 + nr;
+  }
+}
+
+// MITC9 tying (mitc9.h): a = 1/sqrt(3), b = sqrt(3/5); linear basis through -a, a, quadratic
+// through -b, 0, b.
+struct Mitc9Points {
+  double a = 1.0 / std::sqrt(3.0), b = std::sqrt(0.6);
+  std::array<double, 2> lin(double x) const { return {0.5 * (1.0 - x / a), 0.5 * (1.0 + x / a)}; }
+  std::array<double, 3> quad(double x) const {
+    const double b2 = b * b;
+    return {0.5 * x * (x - b) / b2, 1.0 - x * x / b2, 0.5 * x * (x + b) / b2};
+  }
+  double r_coord(int k) const { return (k / 3 == 0) ? -a : a; }
+  double s_coord(int k) const { return (k % 3 - 1) * b; }
+};
+
+// The tying values the interpolation needs, per power of t: rows e_rr and 2e_rt of the 6 points
+// (r_k, s_k) of their family, e_ss and 2e_st of the 6 points (s_k, r_k), 2e_rs of the 4 points
+// (+-a, +-a); one sample per row of these matrices (column-major: a column holds one dof's
+// samples, so each interpolated row is a product with the weight vector).
+using Samples6 = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, kMaxDof>;
+using Samples4 = Eigen::Matrix<double, 4, Eigen::Dynamic, Eigen::ColMajor, 4, kMaxDof>;
+struct Mitc9Tying {
+  Samples6 rr[3], rt[3], ss[3], st[3];
+  Samples4 rs[3];
+};
+
+void mitc9_tying_poly(const Shell9Geometry& g, int n, CovPoly* scratch, Mitc9Tying* ty) {
+  const Mitc9Points m;
+  auto at = [&](double r, double s) {
+    const Shape9 sh = lagrange9(r, s);
+    covariant_poly(g, sh, surface_point(g, sh), n, scratch);
+  };
+  for (int p = 0; p < 3; ++p) {
+    ty->rr[p].resize(6, n);
+    ty->rt[p].resize(6, n);
+    ty->ss[p].resize(6, n);
+    ty->st[p].resize(6, n);
+    ty->rs[p].resize(4, n);
+  }
+  for (int k = 0; k < 6; ++k) {
+    at(m.r_coord(k), m.s_coord(k));
+    for (int p = 0; p < 3; ++p) {
+      ty->rr[p].row(k) = scratch->B[p].row(0);
+      ty->rt[p].row(k) = scratch->B[p].row(3);
+    }
+    at(m.s_coord(k), m.r_coord(k));  // r and s exchanged
+    for (int p = 0; p < 3; ++p) {
+      ty->ss[p].row(k) = scratch->B[p].row(1);
+      ty->st[p].row(k) = scratch->B[p].row(4);
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    at((k % 2 == 0) ? -m.a : m.a, (k / 2 == 0) ? -m.a : m.a);
+    for (int p = 0; p < 3; ++p) ty->rs[p].row(k) = scratch->B[p].row(2);
+  }
+}
+
+void mitc9_assumed_poly(const Mitc9Tying& ty, double r, double s, int n, CovPoly* out) {
+  const Mitc9Points m;
+  const auto lr = m.lin(r), ls = m.lin(s);
+  const auto qr = m.quad(r), qs = m.quad(s);
+  Eigen::Matrix<double, 6, 1> wr, ws;
+  Eigen::Vector4d wrs;
+  for (int k = 0; k < 6; ++k) {
+    wr(k) = lr[k / 3] * qs[k % 3];  // e_rr, 2e_rt family
+    ws(k) = ls[k / 3] * qr[k % 3];  // e_ss, 2e_st family
+  }
+  for (int k = 0; k < 4; ++k) wrs(k) = lr[k % 2] * ls[k / 2];
+  for (int p = 0; p < 3; ++p) {
+    BMat& B = out->B[p];
+    B.resize(5, n);
+    B.row(0).noalias() = wr.transpose() * ty.rr[p];
+    B.row(1).noalias() = ws.transpose() * ty.ss[p];
+    B.row(2).noalias() = wrs.transpose() * ty.rs[p];
+    B.row(3).noalias() = wr.transpose() * ty.rt[p];
+    B.row(4).noalias() = ws.transpose() * ty.st[p];
+  }
+}
+
+// Point basis at thickness coordinate t of a surface point (as point_basis()).
+struct Basis {
+  double detJ;
+  Mat3 frame;
+  Mat5 T;  // local_transform(J^-1 frame)
+};
+
+Basis basis_at(const SurfacePoint& p, double t) {
+  Basis b;
+  Mat3 J;
+  const Vec3 gr = p.gr0 + t * p.gr1, gs = p.gs0 + t * p.gs1;
+  J.col(0) = gr;
+  J.col(1) = gs;
+  J.col(2) = p.gt;
+  b.detJ = J.determinant();
+  const Vec3 e3 = gr.cross(gs).normalized();
+  const Vec3 e1 = gr.normalized();
+  b.frame.col(0) = e1;
+  b.frame.col(1) = e3.cross(e1);
+  b.frame.col(2) = e3;
+  b.T = local_transform(J.inverse() * b.frame);
+  return b;
+}
+
+struct PointLaw {
+  Vec3 stress;
+  Mat3 D;
+  double potential;
+  double rate;
+};
+
+PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int flow_index,
+                        const Vec3& d, Shell9Stiffness kind, double tangent_weight) {
+  PointLaw p;
+  if (!mat.viscous) {
+    const double nu = mat.poisson, f = mat.young / (1.0 - nu * nu);
+    p.D << f, f * nu, 0.0, f * nu, f, 0.0, 0.0, 0.0, 0.5 * f * (1.0 - nu);
+    p.stress = p.D * d;
+    p.potential = 0.5 * d.dot(p.stress);
+    p.rate = 0.0;
+    return p;
+  }
+  const double sy = st.sigma_y ? st.sigma_y[flow_index] : 0.0;
+  const double hv = st.hardening_viscosity ? st.hardening_viscosity[flow_index] : 0.0;
+  const HillPlaneStressLaw& law = *mat.law;
+  const Mat3& A = law.A();
+  const Vec3 Ad = A * d;
+  const InPlanePoint ip = law.evaluate_scaled(sy, hv, Ad, std::max(d.dot(Ad) / 3.0, 0.0));
+  p.stress = ip.stress;
+  p.potential = ip.potential;
+  p.rate = ip.rate;
+  if (kind == Shell9Stiffness::kNone) return p;
+  p.D = ip.mu * A;
+  if (kind != Shell9Stiffness::kTangent) return p;
+  if (st.dual_record) {
+    // Primal-dual tangent (shell9.h, Shell9FlowDirection).
+    Shell9FlowDirection& rec = st.dual_record[flow_index];
+    rec.d = d;
+    rec.eh = ip.cutoff_rate;
+    rec.m = ip.cutoff_rate > 0.0 ? Vec3(Ad / (3.0 * ip.cutoff_rate)) : Vec3::Zero();
+    Vec3 n = Vec3::Zero(), n_full = Vec3::Zero();
+    if (st.dual_given) {
+      n = n_full = st.dual_given[flow_index];
+    } else if (st.dual_anchor && st.dual_anchor[flow_index].eh > 0.0) {
+      const Shell9FlowDirection& a = st.dual_anchor[flow_index];
+      const Vec3 dd = d - a.d;
+      n = n_full = a.m + (A * dd / 3.0 - a.n * a.m.dot(dd)) / a.eh;
+      const double norm2 = law.dual_norm_squared(n);
+      if (norm2 > 1.0) n /= std::sqrt(norm2);
+    }
+    rec.n = n;
+    rec.n_full = n_full;
+    if (ip.tangent_coef != 0.0) {
+      const Vec3 nAd = (1.5 * tangent_weight * ip.tangent_coef * ip.cutoff_rate) * n;
+      p.D += nAd * Ad.transpose() + Ad * nAd.transpose();
+    }
+    return p;
+  }
+  if (ip.tangent_coef != 0.0) p.D += (tangent_weight * ip.tangent_coef) * Ad * Ad.transpose();
+  return p;
+}
+
+// Per-thread scratch: the kernels allocate nothing after the first element of a given size.
+struct Workspace {
+  Mitc9Tying tying;
+  CovPoly assumed;
+  Eigen::MatrixXd DL;         // (dV D_p) B_p, one row per strain row of L
+  Eigen::VectorXd rate, gen;  // L q and the row forces (dV times stresses)
+  Shell9Operators ops;        // shell9_evaluate(g, ...)
+};
+
+Workspace& workspace() {
+  thread_local Workspace ws;
+  return ws;
+}
+
+}  // namespace
+
+void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                      Shell9Operators* ops) {
+  Workspace& ws = workspace();
+  const int n = g.ndof();
+  assert(n <= kMaxDof);
+  const Gauss& mr = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
+  const bool separate_shear = rule == Shell9Rule::kSelective;
+  const bool mitc = rule == Shell9Rule::kMitc9;
+  const int nt = static_cast<int>(thick.zeta.size());
+  const int nip = mr.n * mr.n;
+  const Gauss& sr = gauss(separate_shear ? 2 : mr.n);
+  ops->ndof = n;
+  ops->inplane_points = nip;
+  ops->shear_points = sr.n * sr.n;
+  // Rows: per flow point its 3 in-plane rows (and, without a separate shear rule, its 2 shear
+  // rows); the selective rule's shear rows follow, 2 per shear point and thickness point.
+  const int R = separate_shear ? 3 * nip * nt + 2 * sr.n * sr.n * nt : 5 * nip * nt;
+  ops->L.resize(R, n);
+  ops->flow.clear();
+  ops->shear.clear();
+  ops->frame.assign(static_cast<std::size_t>(nip), Mat3::Identity());
+  int rows = 0;
+  auto add_shear = [&](const auto& Bs, double dV, double h_weight, int point) {
+    ops->L.middleRows(rows, 2) = Bs;
+    ops->shear.push_back({rows, point, dV, h_weight});
+    rows += 2;
+  };
+  if (mitc) mitc9_tying_poly(g, n, &ws.assumed, &ws.tying);
+  int ip = 0;
+  for (int j = 0; j < mr.n; ++j) {
+    for (int i = 0; i < mr.n; ++i, ++ip) {
+      const double r = mr.x[i], s = mr.x[j];
+      const Shape9 sh = lagrange9(r, s);
+      const SurfacePoint sp = surface_point(g, sh);
+      if (mitc) {
+        mitc9_assumed_poly(ws.tying, r, s, n, &ws.assumed);
+      } else {
+        covariant_poly(g, sh, sp, n, &ws.assumed);
+      }
+      const CovPoly& A = ws.assumed;
+      for (int k = 0; k < nt; ++k) {
+        const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
+        const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
+        const Basis b = basis_at(sp, t);
+        const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
+        const BMat Bl = b.T * Bcov;
+        const double dV = b.detJ * mr.w[i] * mr.w[j] * wt;
+        // Resultants per unit length: dz = h/2 dt, z = t h/2 (weights of [-1, 1] halved).
+        const double dz = 0.5 * sp.h * wt;
+        ops->L.middleRows(rows, 3) = Bl.topRows<3>();
+        ops->flow.push_back({rows, ip, dV, dz, dz * 0.5 * t * sp.h});
+        rows += 3;
+        if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
+        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
+      }
+    }
+  }
+  if (separate_shear) {
+    int spi = 0;
+    for (int j = 0; j < sr.n; ++j) {
+      for (int i = 0; i < sr.n; ++i, ++spi) {
+        const Shape9 sh = lagrange9(sr.x[i], sr.x[j]);
+        const SurfacePoint sp = surface_point(g, sh);
+        covariant_poly(g, sh, sp, n, &ws.assumed);
+        const CovPoly& A = ws.assumed;
+        for (int k = 0; k < nt; ++k) {
+          const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
+          const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
+          const Basis b = basis_at(sp, t);
+          const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
+          const Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxDof> Bs =
+              b.T.bottomRows<2>() * Bcov;
+          add_shear(Bs, b.detJ * sr.w[i] * sr.w[j] * wt, 0.5 * sp.h * wt, spi);
+        }
+      }
+    }
+  }
+  assert(rows == R);
+  // Drilling: 1/2 k (V3 . omega)^2 at 6-dof nodes (section 6.3: a small artificial in-plane
+  // rotational stiffness); numerics.md 4.2 suggests 1e-3..1e-4 mu h A_e.
+  ops->drill.clear();
+  bool any_drill = false;
+  for (int a = 0; a < 9; ++a) any_drill = any_drill || g.n_rot[a] == 3;
+  if (any_drill) {
+    const double area = shell9_area(g);
+    for (int a = 0; a < 9; ++a) {
+      if (g.n_rot[a] != 3) continue;
+      ops->drill.push_back({g.offset(a) + 3, g.director[a], g.thickness[a] * area / 9.0});
+    }
+  }
+}
+
+void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
+                     const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
+                     Shell9Output* out, double tangent_weight) {
+  Workspace& ws = workspace();
+  const int n = ops.ndof;
+  assert(q.size() == n);
+  const bool want_k = kind != Shell9Stiffness::kNone;
+  const auto R = ops.L.rows();
+  const double Gs = mat.shear_correction * mat.shear_reference();
+  out->point_rate.assign(ops.flow.size(), 0.0);
+  out->resultant.assign(static_cast<std::size_t>(ops.inplane_points), Shell9Resultant{});
+  out->shear_force.assign(static_cast<std::size_t>(ops.shear_points), Eigen::Vector2d::Zero());
+  out->potential = 0.0;
+  ws.rate.noalias() = ops.L * q;
+  ws.gen.resize(R);
+  if (want_k) ws.DL.resize(R, n);
+  for (std::size_t f = 0; f < ops.flow.size(); ++f) {
+    const Shell9Operators::FlowRow& fr = ops.flow[f];
+    const Vec3 d = ws.rate.segment<3>(fr.row);
+    const PointLaw p = evaluate_point(mat, state, static_cast<int>(f), d, kind, tangent_weight);
+    out->point_rate[f] = p.rate;
+    ws.gen.segment<3>(fr.row) = fr.dV * p.stress;
+    if (want_k) ws.DL.middleRows(fr.row, 3).noalias() = (fr.dV * p.D) * ops.L.middleRows(fr.row, 3);
+    out->potential += p.potential * fr.dV;
+    Shell9Resultant& res = out->resultant[static_cast<std::size_t>(fr.point)];
+    res.N += fr.dz * p.stress;
+    res.M += fr.arm * p.stress;
+  }
+  for (int ip = 0; ip < ops.inplane_points; ++ip) {
+    out->resultant[static_cast<std::size_t>(ip)].frame = ops.frame[static_cast<std::size_t>(ip)];
+  }
+  // Transverse shear rows: Q = Gs gamma (penalty viscosity / elastic k G).
+  for (const Shell9Operators::ShearRow& sh : ops.shear) {
+    const Eigen::Vector2d gam = ws.rate.segment<2>(sh.row);
+    ws.gen.segment<2>(sh.row) = (Gs * sh.dV) * gam;
+    if (want_k) ws.DL.middleRows(sh.row, 2) = (Gs * sh.dV) * ops.L.middleRows(sh.row, 2);
+    out->potential += 0.5 * Gs * gam.squaredNorm() * sh.dV;
+    out->shear_force[static_cast<std::size_t>(sh.point)] += (Gs * sh.dz) * gam;
+  }
+  out->force.noalias() = ops.L.transpose() * ws.gen;
+  if (want_k) {
+    // K = sum_p B_p^T (dV D_p) B_p over all strain rows of all points, as one product of the
+    // stacked operators: the lower triangle by one triangular product (Eigen's blocked kernel),
+    // then mirrored.
+    out->stiffness.setZero(n, n);
+    out->stiffness.triangularView<Eigen::Lower>() += ops.L.transpose() * ws.DL;
+    out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
+  }
+  for (const Shell9Operators::DrillNode& dn : ops.drill) {
+    const double kd = mat.drill_scale * mat.shear_reference() * dn.thickness_area;
+    const double w = dn.director.dot(q.segment<3>(dn.offset));
+    out->force.segment<3>(dn.offset) += kd * w * dn.director;
+    if (want_k)
+      out->stiffness.block<3, 3>(dn.offset, dn.offset) +=
+          kd * dn.director * dn.director.transpose();
+    out->potential += 0.5 * kd * w * w;
+  }
+}
+
+void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                     const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
+                     Shell9Stiffness kind, Shell9Output* out, double tangent_weight) {
+  Shell9Operators& ops = workspace().ops;
+  shell9_operators(g, rule, thick, &ops);
+  shell9_evaluate(ops, mat, state, q, kind, out, tangent_weight);
+}
+
+}  // namespace vs::shell3d

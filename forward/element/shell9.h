@@ -1,0 +1,146 @@
+// The 9-node degenerated shell element of paper section 6 in the viscous analogy (velocities for
+// displacements, strain rates for strains), with a choice of strain evaluation:
+//   kSelective (paper, section 6.3): in-plane components (eps11, eps22, gam12) at 3x3 points,
+//     transverse shear (gam13, gam23) at 2x2 points. Membrane-locks on thin curved shells and has
+//     one spurious transverse mode in flat free meshes (numerics.md sections 1.4, 2.1).
+//   kMitc9: all components at 3x3 points from the MITC9 assumed covariant strains (mitc9.h).
+//   kFull / kReduced: everything at 3x3 / 2x2 (for comparison and zero-mode tests only).
+// Through the thickness, any ThicknessRule (Gauss or Simpson; quadrature.h).
+//
+// Constitutive choices (Shell9Material):
+//   elastic:  D1 = E/(1-nu^2) [[1,nu,0],[nu,1,0],[0,0,(1-nu)/2]], D2 = k G I, G = E/(2(1+nu)),
+//             k = 5/6 (eq. 63 read as k G, READING-NOTES). nu = 1/2 gives G [[4,2,0],[2,4,0],
+//             [0,0,1]] = the viscous D1 with mu = G (numerics.md 1.1).
+//   viscous:  the Hill point law (hill_plane_stress.h) at every in-plane point and thickness
+//             point ("flow point"); ViscousLaw::Constant(mu) is the constant-viscosity mode.
+//             Transverse shear carries the penalty viscosity k * shear_viscosity, not the flow
+//             rule (numerics.md 3.4; same choice as the axisymmetric element).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "element/simpson.h"
+#include "material/hill_plane_stress.h"
+#include "element/shell9_kinematics.h"
+
+namespace vs::shell3d {
+
+enum class Shell9Rule { kSelective, kMitc9, kFull, kReduced };
+
+inline constexpr double kShellShearCorrection = 5.0 / 6.0;
+
+struct Shell9Material {
+  bool viscous = false;
+  double young = 0.0, poisson = 0.5;        // elastic
+  const HillPlaneStressLaw* law = nullptr;  // viscous (not owned)
+  double shear_viscosity = 0.0;             // viscous: transverse-shear penalty viscosity
+  double shear_correction = kShellShearCorrection;
+  // Artificial drilling stiffness at 6-dof nodes: drill_scale * G_ref * h_a * (element area) / 9
+  // for each such node (G_ref = G or shear_viscosity).
+  double drill_scale = 1e-3;
+
+  static Shell9Material Elastic(double young, double poisson);
+  static Shell9Material Viscous(const HillPlaneStressLaw& law, double shear_viscosity);
+  double shear_reference() const;
+};
+
+// Primal-dual tangent (material/flow_direction.h, here with the 3-component Hill law): at every
+// flow point the flow direction m = A d / (3 eh) is replaced in the rank-one part of the tangent
+// by a dual unknown n,
+//   D(n) = mu A + w 3 eh c sym(n (A d)^T),          c = tangent coefficient, w = tangent weight,
+// (n = m: the consistent tangent; n = 0: the secant matrix of the direct iteration). n follows
+// from the linearised dual equation 3 eh n - A d = 0 about an earlier evaluation ("anchor", with
+// rate d_a, direction m_a, cut-off rate eh_a and dual n_a), with dd = d - d_a the rate change of
+// the point (d is linear in the element velocities while the geometry is fixed):
+//   n_full = m_a + (A dd / 3 - n_a (m_a . dd)) / eh_a,
+// and n = n_full scaled back onto the ball |n|_* = sqrt(3 n^T A^-1 n) <= 1 (|m|_* = e / eh < 1).
+// D(n) is positive semi-definite for |n|_*, |m|_* <= 1 (flow_direction.h). Without an anchor
+// n = 0; the caller may also prescribe n (dual_given: a damped step of the duals).
+struct Shell9FlowDirection {
+  Vec3 d = Vec3::Zero();       // in-plane rate of the evaluation
+  Vec3 m = Vec3::Zero();       // its flow direction A d / (3 eh) (0 for a constant viscosity)
+  Vec3 n = Vec3::Zero();       // the dual its tangent used
+  Vec3 n_full = Vec3::Zero();  // n before the scaling onto the ball
+  double eh = 0.0;             // cut-off rate sqrt(e^2 + e_c^2)
+};
+
+// Per flow point state (viscous only), index = in-plane point * n_thickness + thickness point.
+// Null pointers mean 0. With dual_record set, a kTangent evaluation uses the primal-dual tangent
+// (n = dual_given if set, else from dual_anchor if set, else 0) and writes every flow point's
+// record there.
+struct Shell9State {
+  const double* sigma_y = nullptr;
+  const double* hardening_viscosity = nullptr;
+  const Shell9FlowDirection* dual_anchor = nullptr;
+  const Vec3* dual_given = nullptr;
+  Shell9FlowDirection* dual_record = nullptr;
+};
+
+enum class Shell9Stiffness { kSecant, kTangent, kNone };
+
+struct Shell9Resultant {
+  Vec3 N = Vec3::Zero();          // membrane forces (N11, N22, N12) [N/mm], local frame
+  Vec3 M = Vec3::Zero();          // moments int s z dz [N], z along e3
+  Mat3 frame = Mat3::Identity();  // local frame (columns e1, e2, e3) at the mid-surface
+};
+
+struct Shell9Output {
+  Eigen::VectorXd force;           // internal nodal forces, element dofs
+  Eigen::MatrixXd stiffness;       // secant or tangent
+  double potential = 0.0;          // integral of the power potential (elastic: strain energy)
+  std::vector<double> point_rate;  // effective rate at each flow point (viscous)
+  std::vector<Shell9Resultant> resultant;    // at each in-plane (flow) point
+  std::vector<Eigen::Vector2d> shear_force;  // (Q13, Q23) [N/mm] at each shear point
+};
+
+// Number of in-plane points of the flow (membrane/bending) rule: 9, or 4 for kReduced.
+int shell9_inplane_points(Shell9Rule rule);
+
+// The velocity-independent part of an element evaluation in one configuration: the strain-rate
+// operators of all points stacked as the rows of L (local frame, 3 in-plane rows per flow point,
+// 2 transverse-shear rows per shear point; B(t) = B0 + t B1 + t^2 B2, MITC9 tying, basis), their
+// volume and resultant weights, and the drilling terms. A nonlinear solve evaluates one
+// configuration many times: building this once per configuration (shell9_operators) and
+// evaluating with it (about 48 KB per MITC9 element with 3 thickness points) leaves per
+// evaluation only L q, the point laws, L^T (row forces) and, for a matrix, L^T (D L).
+struct Shell9Operators {
+  struct FlowRow {  // a flow point (index in Shell9State arrays = position in `flow`)
+    int row = 0;    // its 3 in-plane rows start here
+    int point = 0;  // in-plane point (resultants)
+    double dV = 0.0, dz = 0.0, arm = 0.0;  // volume weight; h/2 dt and z dz (resultants)
+  };
+  struct ShearRow {
+    int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
+    double dV = 0.0, dz = 0.0;  // volume weight; h/2 dt
+  };
+  struct DrillNode {
+    int offset = 0;  // the node's rotation dofs
+    Vec3 director = Vec3::UnitZ();
+    double thickness_area = 0.0;  // h_a (element area) / 9
+  };
+  int ndof = 0, inplane_points = 0, shear_points = 0;
+  Eigen::MatrixXd L;
+  std::vector<FlowRow> flow;
+  std::vector<ShearRow> shear;
+  std::vector<Mat3> frame;  // local frame at the middle thickness point of each in-plane point
+  std::vector<DrillNode> drill;
+};
+
+void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                      Shell9Operators* ops);
+
+// Evaluates the element at element velocities q (size ops.ndof).
+void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
+                     const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
+                     Shell9Output* out, double tangent_weight = 1.0);
+
+// The same, building the operators of g first.
+void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
+                     const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
+                     Shell9Stiffness kind, Shell9Output* out, double tangent_weight = 1.0);
+
+// Mid-surface area of the element (3x3 Gauss).
+double shell9_area(const Shell9Geometry& g);
+
+}  // namespace vs::shell3d

@@ -1,0 +1,32 @@
+// The linear-solver interface the Newton loop sees (MFEM's Solver, Ceres' LinearSolver): a
+// problem assembles its matrix into the storage its solver owns, the Newton loop asks the solver
+// to factorise that matrix and to solve with the factorisation. Two implementations:
+//   BlockTridiagSolver (linalg/block_tridiag_solver.h)   the axisymmetric meridian chain, O(n)
+//   SparseCholeskySolver (linalg/sparse_spd_solver.h)       the 3D shell: CHOLMOD supernodal or
+//                                                         Eigen's SimplicialLDLT, analysis once
+// Only the problem knows the matrix type; the loop knows analyse / factorise / solve / info.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+namespace vs {
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  // Factorises the matrix the problem last assembled (the symbolic analysis, where there is one,
+  // is done on the first call and kept while the pattern does not change). False if the matrix
+  // is not positive definite (or, unsymmetric, has a pivot block whose symmetric part is not).
+  virtual bool factorize() = 0;
+  // Overwrites b with K^-1 b, using the last successful factorisation.
+  virtual void solve_in_place(Eigen::VectorXd* b) const = 0;
+  // A cheap lower bound of the condition number of the last factorised matrix, 1 if unknown.
+  virtual double condition_estimate() const { return 1.0; }
+  // Whether a factorisation is held (a solve may then start with chord steps on it).
+  virtual bool has_factorization() const = 0;
+  // Short name for run.json ("block tridiagonal LDL^T", "CHOLMOD supernodal", ...).
+  virtual std::string name() const = 0;
+};
+
+}  // namespace vs

@@ -1,0 +1,53 @@
+#include "linalg/sparse_spd_solver.h"
+
+namespace vs {
+
+SparseSpdSolver::SparseSpdSolver(SparseSolverKind preferred)
+    : requested_(preferred),
+      preferred_(preferred == SparseSolverKind::kAuto ? SparseSolverKind::kCholmodSupernodal
+                                                      : preferred),
+      active_(preferred_) {}
+
+SparseSpdSolver::~SparseSpdSolver() = default;
+
+void SparseSpdSolver::analyze(const SparseMatrix& A) {
+  ++analyses_;
+  ldlt_analyzed_ = false;
+  if (requested_ == SparseSolverKind::kAuto) {
+    preferred_ = A.rows() < kAutoCholmodDofs ? SparseSolverKind::kSimplicialLDLT
+                                             : SparseSolverKind::kCholmodSupernodal;
+  }
+  if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
+    cholmod_ = std::make_unique<Cholmod>();
+    cholmod_->analyzePattern(A);
+  } else {
+    ldlt_ = std::make_unique<Ldlt>();
+    ldlt_->analyzePattern(A);
+    ldlt_analyzed_ = true;
+  }
+}
+
+bool SparseSpdSolver::factorize(const SparseMatrix& A) {
+  if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
+    cholmod_->factorize(A);
+    if (cholmod_->info() == Eigen::Success) {
+      active_ = SparseSolverKind::kCholmodSupernodal;
+      return true;
+    }
+  }
+  if (!ldlt_analyzed_) {
+    ldlt_ = std::make_unique<Ldlt>();
+    ldlt_->analyzePattern(A);
+    ldlt_analyzed_ = true;
+  }
+  ldlt_->factorize(A);
+  active_ = SparseSolverKind::kSimplicialLDLT;
+  return ldlt_->info() == Eigen::Success;
+}
+
+Eigen::VectorXd SparseSpdSolver::solve(const Eigen::VectorXd& b) const {
+  if (active_ == SparseSolverKind::kCholmodSupernodal) return cholmod_->solve(b);
+  return ldlt_->solve(b);
+}
+
+}  // namespace vs

@@ -1,0 +1,28 @@
+#include "stepping/step_driver_options.h"
+
+namespace vs {
+
+bool StepDriverOptions::IsValid(std::string* why) const {
+  auto fail = [&](const char* m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (!(contact_tolerance > 0.0 && contact_tolerance <= attach_tolerance))
+    return fail("contact_tolerance must be positive and at most attach_tolerance");
+  if (!(attach_tolerance < 1.0)) return fail("attach_tolerance must be below 1 thickness");
+  if (max_contact_rounds < 1) return fail("max_contact_rounds must be at least 1");
+  if (!(release_fraction >= 0.0 && release_fraction < 1.0))
+    return fail("release_fraction must be in [0, 1)");
+  if (!(hold_off_increments >= 0.0)) return fail("hold_off_increments must be >= 0");
+  if (!(min_event_fraction > 0.0 && min_event_fraction < 1.0))
+    return fail("min_event_fraction must be in (0, 1)");
+  if (max_steps_with_cutbacks < 1 || max_stalled_steps < 1)
+    return fail("the stop counts must be at least 1");
+  if (!(stall_fraction > 0.0 && stall_fraction < 1.0))
+    return fail("stall_fraction must be in (0, 1)");
+  if (!(min_thickness_ratio > 0.0 && min_thickness_ratio < 1.0 && max_thickness_ratio > 1.0))
+    return fail("thickness ratios must bracket 1");
+  return true;
+}
+
+}  // namespace vs

@@ -1,0 +1,46 @@
+// The step driver's constants, declared once for both geometries (they were hard-coded in each
+// driver before Nov 2026). Each is a measured choice; the comment says what it guards.
+#pragma once
+
+#include <string>
+
+namespace vs {
+
+struct StepDriverOptions {
+  // Contact search, relative to the sheet thickness: a node touches a tool when its gap is below
+  // contact_tolerance; next to a patch (most of its neighbours on the tool) the search widens to
+  // attach_tolerance, which fills holes inside a patch (a rigid band riding on the punch lifts
+  // off by micrometres and would otherwise never come back; the front of a patch still advances
+  // by exact contact events, so outputs stay smooth in the parameters).
+  double contact_tolerance = 1e-8;
+  double attach_tolerance = 1e-2;
+  // Active-set rounds of one solve (release, re-solve) before it fails.
+  int max_contact_rounds = 20;
+  // A released node's reaction must pull by more than this fraction of the largest contact
+  // reaction (round-off level: a node touching with zero force would chatter otherwise).
+  double release_fraction = 1e-4;
+  // A released node may not touch again before the punch has moved this many grid increments:
+  // without the hysteresis a node whose reaction hovers around zero attaches and releases at
+  // every step and the contact-event step shrinks to nothing (measured: ex1, 40 elements,
+  // sticking, 0.037 mm grid: 20 000 steps stuck at 26.63 mm).
+  double hold_off_increments = 1.0;
+  // A contact event closer than this fraction of the step cap is taken at this fraction.
+  double min_event_fraction = 1e-12;
+  // A run stops (with the reason) after this many consecutive steps that needed a cut-back (the
+  // step size keeps collapsing), or that advanced the punch by less than stall_fraction of the
+  // grid increment (contact events piling up at one instant).
+  int max_steps_with_cutbacks = 25;
+  int max_stalled_steps = 200;
+  double stall_fraction = 1e-6;
+  // Thickness limits relative to the initial thickness: thinning to min_thickness_ratio is
+  // fracture (necking has long run away), thickening to max_thickness_ratio means the mesh is
+  // folding onto itself (measured: a cup whose flange locks in a fixed-gap holder tangles at the
+  // holder edge, h = 13 h0).
+  double min_thickness_ratio = 0.05;
+  double max_thickness_ratio = 3.0;
+
+  // False with the reason if an option is out of range.
+  bool IsValid(std::string* why) const;
+};
+
+}  // namespace vs
