@@ -1,6 +1,7 @@
 #include "calibrate_command.h"
 
 #include <fmt/format.h>
+#include <glog/logging.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -9,7 +10,6 @@
 
 #include "calibrate.h"
 #include "calibration_config.h"
-#include "core/error.h"
 #include "default_forward_model.h"
 
 namespace vs {
@@ -21,37 +21,52 @@ struct CalibrateArgs {
   bool quiet = false;
 };
 
-void run_calibrate(const CalibrateArgs& args) {
-  try {
-    const CalibrationConfig config = load_calibration_config(args.config);
-    CalibrationOptions options;
-    options.output_directory = args.output_directory;
-    if (!args.quiet) {
-      options.progress = [](const std::string& line) {
-        fmt::print("{}\n", line);
-        std::fflush(stdout);
-      };
-    }
-    const CalibrationResult result = calibrate(config, options, make_default_forward_model());
-    fmt::print("{}", result.brief_report());
-    if (result.termination == CalibrationTermination::kFailed) throw CLI::RuntimeError(1);
-  } catch (const InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    throw CLI::RuntimeError(2);
+// Input errors (InputError) propagate to vshell's main: "error: ..." on stderr, exit code 2.
+// A calibration that could not fit (every forward run failing, ...) is a failed run: the report
+// is written, the reason goes to stderr as one line and the exit code is 3.
+int run_calibrate(const CalibrateArgs& args) {
+  // Ceres reports a failed solve through glog as well ("Terminating: ..."), before
+  // InitGoogleLogging; the reason is in the result and printed below, so glog stays quiet.
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  const CalibrationConfig config = load_calibration_config(args.config);
+  CalibrationOptions options;
+  options.output_directory = args.output_directory;
+  if (!args.quiet) {
+    options.progress = [](const std::string& line) {
+      fmt::print("{}\n", line);
+      std::fflush(stdout);
+    };
   }
+  const CalibrationResult result = calibrate(config, options, make_default_forward_model());
+  fmt::print("{}", result.brief_report());
+  std::fflush(stdout);
+  if (result.termination != CalibrationTermination::kFailed) return 0;
+  std::string reason = result.message;
+  for (char& c : reason) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  fmt::print(stderr, "error: calibration failed: {}\n", reason);
+  return 3;
 }
 
 }  // namespace
 
-void add_calibrate_command(CLI::App& app) {
+void add_calibrate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CalibrateArgs>();
   CLI::App* sub = app.add_subcommand(
       "calibrate", "Identify scene parameters (friction, hardening, R, ...) from measured curves");
-  sub->add_option("CONFIG", args->config, "Calibration file (TOML)")->required();
+  sub->footer(
+      "The config format, every key with its default, unit and range, the measurement CSV "
+      "format and the report files: docs/calibration-reference.md (also printed by `vshell "
+      "print-calibration-reference`). Exit codes: 0 done, 2 bad input, 3 calibration failed.");
+  sub->add_option("CONFIG", args->config,
+                  "Calibration file (TOML); every key is documented in "
+                  "docs/calibration-reference.md (`vshell print-calibration-reference`)")
+      ->required();
   sub->add_option("-o,--output", args->output_directory,
                   "Report folder (overrides [output] directory)");
   sub->add_flag("--quiet", args->quiet, "Print only the final summary");
-  sub->callback([args] { run_calibrate(*args); });
+  sub->callback([args, &exit_code] { exit_code = run_calibrate(*args); });
 }
 
 }  // namespace vs

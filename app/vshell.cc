@@ -3,7 +3,7 @@
 //
 //   vshell run SCENE [-o DIR] [--set ADDRESS=VALUE ...] [--quiet | --verbose]
 //   vshell check SCENE [--set ADDRESS=VALUE ...]
-//   vshell print-defaults | print-reference
+//   vshell print-defaults | print-reference | print-calibration-reference
 //   vshell calibrate ...            (app/calibrate_command.h)
 //
 // Exit codes: 0 run completed (or command done), 2 bad input (scene, options, unwritable output
@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "calibrate_command.h"
+#include "calibration_keys.h"
 #include "core/error.h"
 #include "fit_hardening_command.h"
 #include "output/build_info.h"
@@ -209,8 +210,12 @@ int main(int argc, char** argv) {
   app.add_subcommand("print-reference", "Print the scene key reference (Markdown)")->callback([] {
     print_text(vs::scene_reference_markdown());
   });
+  app.add_subcommand("print-calibration-reference",
+                     "Print the calibration config reference (Markdown, "
+                     "docs/calibration-reference.md)")
+      ->callback([] { print_text(vs::calibration_reference_markdown()); });
 
-  vs::add_calibrate_command(app);
+  vs::add_calibrate_command(app, exit_code);
   vs::add_fit_hardening_command(app);
 
   try {

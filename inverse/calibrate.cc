@@ -56,6 +56,12 @@ std::vector<SceneBinding> bind_scenes(CalibrationConfig& config) {
       throw InputError(fmt::format("{}: parameter '{}' is not a number in the scene: {}", p.where,
                                    p.address, reasons.front()[i]));
     }
+    if (home->is_integer(p.address)) {
+      throw InputError(fmt::format(
+          "{}: parameter '{}' is an integer key: integer keys cannot be calibrated (the fit "
+          "moves parameters continuously); set it in [forward.set] instead",
+          p.where, p.address));
+    }
     if (std::isnan(p.initial)) p.initial = home->value_of(p.address);
     if (p.scale == 0.0) p.scale = p.initial != 0.0 ? std::abs(p.initial) : 1.0;
   }
@@ -112,8 +118,8 @@ std::vector<DataSet> make_data_sets(const CalibrationConfig& config) {
     set.scene = scene_index(config, d);
     for (std::size_t i = 0; i < d.measurement.x.size(); ++i) {
       const double w = !d.measurement.point_sigma.empty() ? 1.0 / d.measurement.point_sigma[i]
-                       : d.sigma > 0.0                    ? 1.0 / d.sigma
-                                                          : d.weight;
+                       : d.weight > 0.0                   ? d.weight
+                                                          : 1.0 / data_set_sigma(d).sigma;
       set.weights.push_back(w);
     }
     sets.push_back(std::move(set));
@@ -148,6 +154,38 @@ std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evalua
   return fits;
 }
 
+// The reason an evaluation failed, one line: the failed scene runs' own messages (the scene
+// file and why it stopped) when a run failed, else the residual pipeline's message.
+std::string first_failure(const Evaluation& e, const std::vector<std::string>& scenes) {
+  std::string text;
+  for (std::size_t s = 0; s < e.runs.size(); ++s) {
+    if (e.runs[s].completed()) continue;
+    text += fmt::format("{}{}: {}", text.empty() ? "" : "; ", s < scenes.size() ? scenes[s] : "",
+                        e.runs[s].message);
+  }
+  if (text.empty()) text = e.message;
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+// Counters, timing and the report folder, on every way out of calibrate().
+void finish(const ForwardCache& cache, const CalibrationConfig& config,
+            const CalibrationOptions& options, std::chrono::steady_clock::time_point start,
+            CalibrationResult* result) {
+  result->forward_runs = cache.forward_runs();
+  result->failed_evaluations = cache.failed_evaluations();
+  result->evaluations = cache.log();
+  result->wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.write_report) {
+    result->output_directory =
+        options.output_directory.empty() ? config.output_directory : options.output_directory;
+    result->report_notes = write_calibration_report(*result, config, result->output_directory);
+  }
+}
+
 }  // namespace
 
 std::string to_string(CalibrationTermination termination) {
@@ -171,11 +209,14 @@ Eigen::VectorXd CalibrationResult::free_values() const {
 }
 
 std::string CalibrationResult::brief_report() const {
+  const std::string costs = std::isfinite(initial_cost) && std::isfinite(final_cost)
+                                ? fmt::format("cost {:.6g} -> {:.6g}", initial_cost, final_cost)
+                            : std::isfinite(final_cost)
+                                ? fmt::format("cost {:.6g}", final_cost)
+                                : std::string("no cost (no successful forward run)");
   std::string text = fmt::format(
-      "calibration {}: cost {:.6g} -> {:.6g}, {} iterations, {} forward "
-      "runs ({} failed evaluations), {:.2f} s\n",
-      to_string(termination), initial_cost, final_cost, iterations, forward_runs,
-      failed_evaluations, wall_time_s);
+      "calibration {}: {}, {} iterations, {} forward runs ({} failed evaluations), {:.2f} s\n",
+      to_string(termination), costs, iterations, forward_runs, failed_evaluations, wall_time_s);
   if (!message.empty()) text += fmt::format("  {}\n", message);
   std::size_t k = 0;
   for (const auto& p : parameters) {
@@ -192,6 +233,9 @@ std::string CalibrationResult::brief_report() const {
       text += fmt::format("  {:32s} {:>14.6g} {}\n", p.spec.address, p.value, p.unit);
     }
     ++k;
+  }
+  for (const auto& w : data_weighting) {
+    if (w.relative_default) text += fmt::format("  data {}: {}\n", w.name, w.text);
   }
   if (uncertainty_available) {
     for (const auto& s : uncertainty.statements) text += fmt::format("  note: {}\n", s);
@@ -218,6 +262,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
 
   CalibrationResult result;
   for (const auto& b : bindings) result.scene_sources.push_back(b.source());
+  for (const auto& d : config.data) {
+    result.data_weighting.push_back(
+        {d.measurement.name, data_set_sigma(d).text,
+         d.sigma == 0.0 && d.weight == 0.0 && d.measurement.point_sigma.empty()});
+  }
   ForwardCache cache(std::move(model), std::move(bindings), config.parameters,
                      ResidualPipeline(make_data_sets(config)), config.optimizer.threads);
   Objective objective(&cache, config.optimizer.fd);
@@ -226,7 +275,23 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
                   result.scene_sources.size(), config.optimizer.threads));
 
   const Eigen::VectorXd x0 = objective.initial();
-  result.initial_cost = objective.evaluate(x0)->cost;
+  const auto first = objective.evaluate(x0);
+  result.initial_cost = first->cost;
+  if (!first->ok) {
+    // Nothing to fit from: stop now, with the forward run's own reason.
+    result.termination = CalibrationTermination::kFailed;
+    result.message = "the forward run at the initial parameters fails: " +
+                     first_failure(*first, result.scene_sources);
+    result.uncertainty_message = "no fit";
+    const auto values = cache.all_values(x0);
+    for (std::size_t i = 0; i < cache.parameters().size(); ++i) {
+      const ParameterSpec& spec = cache.parameters()[i];
+      result.parameters.push_back({spec, unit_of_address(spec.address), values[i]});
+    }
+    result.final_cost = first->cost;
+    finish(cache, config, options, start, &result);
+    return result;
+  }
   Eigen::VectorXd x_start = x0;
   if (config.optimizer.method == OptimizerMethod::kGlobalThenLocal) {
     say(fmt::format("global search: {} with seed {}, at most {} evaluations",
@@ -274,16 +339,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
         "the forward model fails at the final point: " + final_point->message;
   }
 
-  result.forward_runs = cache.forward_runs();
-  result.failed_evaluations = cache.failed_evaluations();
-  result.evaluations = cache.log();
-  result.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (options.write_report) {
-    result.output_directory =
-        options.output_directory.empty() ? config.output_directory : options.output_directory;
-    result.report_notes = write_calibration_report(result, config, result.output_directory);
+  if (result.termination == CalibrationTermination::kFailed) {
+    // Ceres only says "Residual and Jacobian evaluation failed": add the forward run's reason.
+    const auto& log = cache.log();
+    for (auto e = log.rbegin(); e != log.rend(); ++e) {
+      if ((*e)->ok) continue;
+      result.message += " Last failed forward run: " + first_failure(**e, result.scene_sources);
+      break;
+    }
   }
+  finish(cache, config, options, start, &result);
   return result;
 }
 

@@ -47,8 +47,16 @@ struct ParameterResult {
   double value = 0.0;  // identified (or the fixed value)
 };
 
+// How one data set was weighted (DataSigma::text), stated in the report.
+struct DataWeighting {
+  std::string name;
+  std::string text;
+  bool relative_default = false;  // sigma from relative_sigma x range (none was given)
+};
+
 struct CalibrationResult {
-  std::vector<ParameterResult> parameters;  // all, in config order
+  std::vector<ParameterResult> parameters;    // all, in config order
+  std::vector<DataWeighting> data_weighting;  // one per data set, in config order
   std::vector<std::string> scene_sources;
   double initial_cost = 0.0;
   double final_cost = 0.0;

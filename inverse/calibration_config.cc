@@ -3,23 +3,44 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
 
+#include "calibration_keys.h"
 #include "core/error.h"
+#include "scene/did_you_mean.h"
+#include "scene/scene_diagnostics.h"
+#include "scene/text_checks.h"
+#include "scene/toml_guard.h"
 
 namespace vs {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Reads one TOML table, checking types, and rejects keys nobody asked for.
+std::string number_text(double x) {
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return fmt::format("{}", x);
+}
+
+// Reads one TOML table against the declared keys of its section (calibration_keys.cc): types,
+// ranges and choices are checked here, and keys that are not declared are errors with a
+// did-you-mean. `subsections` are tables the caller reads itself (the top level's [optimizer]...).
 class TableReader {
  public:
-  TableReader(const toml::table& table, std::string file, std::string section)
-      : table_(table), file_(std::move(file)), section_(std::move(section)) {}
+  TableReader(const toml::table& table, std::string file, std::string section,
+              std::vector<std::string_view> subsections = {})
+      : table_(table),
+        file_(std::move(file)),
+        section_(std::move(section)),
+        subsections_(std::move(subsections)) {}
 
   std::string where(const toml::node& node) const {
     return fmt::format("{}:{}", file_, node.source().begin.line);
@@ -31,62 +52,130 @@ class TableReader {
   }
 
   std::optional<double> number(const std::string& key) {
-    const toml::node* node = take(key);
+    const toml::node* node = take(key, KeyType::kFloat);
     if (!node) return std::nullopt;
-    if (!node->is_number()) fail_type(key, "a number");
-    return node->value<double>();
+    if (!node->is_number()) fail_type(key, "a number", *node);
+    const double x = *node->value<double>();
+    if (std::isnan(x))
+      throw InputError(fmt::format("{}: must be a number, got nan", where_key(key)));
+    check_range(key, x);
+    return x;
   }
   std::optional<long long> integer(const std::string& key) {
-    const toml::node* node = take(key);
+    const toml::node* node = take(key, KeyType::kInt);
     if (!node) return std::nullopt;
-    if (!node->is_integer()) fail_type(key, "an integer");
-    return node->value<long long>();
+    if (!node->is_integer()) fail_type(key, "an integer", *node);
+    const auto i = *node->value<long long>();
+    check_range(key, static_cast<double>(i));
+    return i;
   }
   std::optional<std::string> string(const std::string& key) {
-    const toml::node* node = take(key);
+    const toml::node* node = take(key, KeyType::kString);
     if (!node) return std::nullopt;
-    if (!node->is_string()) fail_type(key, "a string");
+    if (!node->is_string()) fail_type(key, "a string", *node);
     return node->value<std::string>();
   }
-  std::optional<bool> boolean(const std::string& key) {
-    const toml::node* node = take(key);
+  // An enum key: one of the declared choices.
+  std::optional<std::string> choice(const std::string& key) {
+    const toml::node* node = take(key, KeyType::kEnum);
     if (!node) return std::nullopt;
-    if (!node->is_boolean()) fail_type(key, "true or false");
+    if (!node->is_string()) fail_type(key, "a string", *node);
+    const std::string value = *node->value<std::string>();
+    const KeySpec& spec = declared(key);
+    for (std::string_view c : spec.choices) {
+      if (c == value) return value;
+    }
+    std::string allowed;
+    for (std::string_view c : spec.choices)
+      allowed += (allowed.empty() ? "" : ", ") + std::string(c);
+    const std::string guess = closest_match(value, spec.choices);
+    throw InputError(fmt::format("{}: '{}' is not one of {}{}", where_key(key), value, allowed,
+                                 guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
+  }
+  std::optional<bool> boolean(const std::string& key) {
+    const toml::node* node = take(key, KeyType::kBool);
+    if (!node) return std::nullopt;
+    if (!node->is_boolean()) fail_type(key, "true or false", *node);
     return node->value<bool>();
   }
+  // A table-valued key ([forward.set], data columns) or, with `subsection`, a section table.
   const toml::table* table(const std::string& key) {
-    const toml::node* node = take(key);
+    const bool subsection =
+        std::find(subsections_.begin(), subsections_.end(), key) != subsections_.end();
+    const toml::node* node = subsection ? take(key) : take(key, KeyType::kTable);
     if (!node) return nullptr;
-    if (!node->is_table()) fail_type(key, "a table");
+    if (!node->is_table()) fail_type(key, "a table", *node);
     return node->as_table();
   }
-  // Marks a key as known without reading it (handled elsewhere).
+  // A key read without a type check (its reader checks it): a declared key or a subsection.
   const toml::node* take(const std::string& key) {
+    const bool subsection =
+        std::find(subsections_.begin(), subsections_.end(), key) != subsections_.end();
+    if (!subsection) declared(key);
     used_.insert(key);
     return table_.get(key);
   }
 
-  // Every key not taken is an error, listing the allowed ones.
+  // Every key not taken is an error, suggesting the closest declared one.
   void finish() const {
     for (const auto& [key, node] : table_) {
       const std::string name(key.str());
       if (used_.count(name)) continue;
+      std::vector<std::string_view> candidates = subsections_;
+      for (const KeySpec& k : calibration_keys()) {
+        if (k.section == section_) candidates.push_back(k.name);
+      }
+      const std::string guess = closest_match(name, candidates);
       std::string allowed;
-      for (const auto& k : used_) allowed += (allowed.empty() ? "" : ", ") + k;
-      throw InputError(fmt::format("{}: unknown key '{}{}' (allowed: {})", where(node), prefix(),
-                                   name, allowed));
+      for (std::string_view c : candidates)
+        allowed += (allowed.empty() ? "" : ", ") + std::string(c);
+      throw InputError(fmt::format(
+          "{}: unknown key '{}{}' ({})", where(node), prefix(), show_invisible(name),
+          guess.empty() ? "allowed: " + allowed : fmt::format("did you mean '{}'?", guess)));
     }
   }
 
  private:
   std::string prefix() const { return section_.empty() ? "" : section_ + "."; }
-  [[noreturn]] void fail_type(const std::string& key, const char* expected) const {
-    throw InputError(fmt::format("{}: must be {}", where_key(key), expected));
+
+  const KeySpec& declared(const std::string& key) const {
+    const KeySpec* spec = find_calibration_key(section_, key);
+    if (spec == nullptr) {
+      throw std::logic_error(fmt::format("calibration key '{}{}' is not declared", prefix(), key));
+    }
+    return *spec;
+  }
+
+  const toml::node* take(const std::string& key, KeyType type) {
+    if (declared(key).type != type) {
+      throw std::logic_error(
+          fmt::format("calibration key '{}{}' read as another type", prefix(), key));
+    }
+    used_.insert(key);
+    return table_.get(key);
+  }
+
+  void check_range(const std::string& key, double x) const {
+    const KeySpec& spec = declared(key);
+    if (spec.range.contains(x)) return;
+    const bool beyond_resource_bound =
+        !spec.bound_reason.empty() &&
+        (spec.bound_reason_below ? x < spec.range.lo : x > spec.range.hi);
+    throw InputError(fmt::format(
+        "{}: {} is out of range {}{}", where_key(key), number_text(x), spec.range.text(),
+        beyond_resource_bound ? ": " + std::string(spec.bound_reason) : ""));
+  }
+
+  [[noreturn]] void fail_type(const std::string& key, const char* expected,
+                              const toml::node& node) const {
+    throw InputError(
+        fmt::format("{}: must be {}, got {}", where_key(key), expected, toml_type_name(node)));
   }
 
   const toml::table& table_;
   std::string file_;
   std::string section_;
+  std::vector<std::string_view> subsections_;
   std::set<std::string> used_;
 };
 
@@ -141,15 +230,23 @@ ParameterSpec read_parameter(const toml::table& t, const std::string& file) {
   ParameterSpec p;
   p.where = reader.where();
   const auto address = reader.string("address");
-  if (!address) throw InputError(fmt::format("{}: [[parameter]] needs an address", p.where));
-  p.address = *address;
-  // A missing initial value is taken from the scene later; NaN marks it until then.
-  p.initial = reader.number("initial").value_or(std::nan(""));
-  p.lower = reader.number("lower").value_or(p.lower);
+  // A missing initial value is taken from the scene later; NaN marks it until then, so a NaN
+  // written in the file must not reach it.
+  const auto initial = reader.number("initial");
+  if (initial && !std::isfinite(*initial)) {
+    throw InputError(
+        fmt::format("{}: must be a finite number, got {} (omit it to start from "
+                    "the scene's value)",
+                    reader.where_key("initial"), *initial));
+  }
+  p.initial = initial.value_or(std::nan(""));
+  p.lower = reader.number("lower").value_or(p.lower);  // NaN is out of the declared range
   p.upper = reader.number("upper").value_or(p.upper);
   p.scale = reader.number("scale").value_or(0.0);  // 0: derived from the initial value later
   p.fixed = reader.boolean("fixed").value_or(false);
-  reader.finish();
+  reader.finish();  // a misspelt key first: "adress" is more useful than "needs an address"
+  if (!address) throw InputError(fmt::format("{}: [[parameter]] needs an address", p.where));
+  p.address = *address;
   return p;
 }
 
@@ -157,31 +254,60 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
   TableReader reader(t, file, "data");
   DataSpec d;
   d.where = reader.where();
-  const auto kind_name = reader.string("kind");
+  const auto kind_name = reader.choice("kind");
   const auto data_file = reader.string("file");
+  d.sigma = reader.number("sigma").value_or(0.0);
+  d.weight = reader.number("weight").value_or(0.0);
+  d.relative_sigma = reader.number("relative_sigma").value_or(d.relative_sigma);
+  const auto travel = reader.number("travel_mm");
+  const auto name = reader.string("name");
+  d.scene = reader.string("scene").value_or("");
+  MeasurementColumns columns;
+  if (const toml::table* mapping = reader.table("columns")) {
+    for (const auto& [key, node] : *mapping) {
+      if (!node.is_string()) {
+        throw InputError(
+            fmt::format("{}:{}: key 'data.columns.{}': must be a string (the "
+                        "column's header in the file), got {}",
+                        file, node.source().begin.line, key.str(), toml_type_name(node)));
+      }
+      columns.emplace_back(std::string(key.str()), *node.value<std::string>());
+    }
+    if (columns.empty()) {
+      throw InputError(
+          fmt::format("{}: must map at least one column", reader.where_key("columns")));
+    }
+  }
+  reader.finish();
   if (!kind_name || !data_file) {
     throw InputError(fmt::format("{}: [[data]] needs kind and file", d.where));
   }
   const MeasurementKind kind = measurement_kind_from_string(*kind_name, reader.where_key("kind"));
-  d.sigma = reader.number("sigma").value_or(0.0);
-  d.weight = reader.number("weight").value_or(0.0);
-  const auto travel = reader.number("travel_mm");
-  const auto name = reader.string("name");
-  d.scene = reader.string("scene").value_or("");
-  reader.finish();
 
-  d.measurement = read_measurement_csv(resolve(base_dir, *data_file), kind);
+  try {
+    d.measurement = read_measurement_csv(resolve(base_dir, *data_file), kind, columns);
+  } catch (const InputError& e) {
+    if (columns.empty()) throw;
+    throw InputError(
+        fmt::format("{} (columns mapped at {})", e.what(), reader.where_key("columns")));
+  }
   d.measurement.name = name.value_or(fs::path(*data_file).stem().string());
   if (kind == MeasurementKind::kLoadTravel && travel) {
     throw InputError(fmt::format("{}: travel_mm applies to profiles, not to load_travel data",
                                  reader.where_key("travel_mm")));
   }
   if (kind != MeasurementKind::kLoadTravel) {
-    if (!travel) {
+    const double in_file = d.measurement.travel_mm;  // vshell strains files state it
+    if (travel && in_file > 0.0 && std::abs(*travel - in_file) > 1e-6 * std::max(1.0, in_file)) {
+      throw InputError(fmt::format("{}: travel_mm = {} but {} was written at {} mm",
+                                   reader.where_key("travel_mm"), *travel, d.measurement.file,
+                                   in_file));
+    }
+    if (!travel && !(in_file > 0.0)) {
       throw InputError(fmt::format("{}: {} data needs travel_mm (the punch travel of the profile)",
                                    d.where, *kind_name));
     }
-    d.measurement.travel_mm = *travel;
+    if (travel) d.measurement.travel_mm = *travel;
   }
   return d;
 }
@@ -189,37 +315,23 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
 void read_optimizer(const toml::table* t, const std::string& file, OptimizerSettings& o) {
   if (!t) return;
   TableReader r(*t, file, "optimizer");
-  if (const auto method = r.string("method")) {
-    if (*method == "levenberg_marquardt") {
-      o.method = OptimizerMethod::kLevenbergMarquardt;
-    } else if (*method == "global_then_local") {
-      o.method = OptimizerMethod::kGlobalThenLocal;
-    } else {
-      throw InputError(fmt::format("{}: '{}' (levenberg_marquardt, global_then_local)",
-                                   r.where_key("method"), *method));
-    }
+  if (const auto method = r.choice("method")) {
+    o.method = *method == "global_then_local" ? OptimizerMethod::kGlobalThenLocal
+                                              : OptimizerMethod::kLevenbergMarquardt;
   }
   auto& ls = o.least_squares;
   ls.max_iterations = static_cast<int>(r.integer("max_iterations").value_or(ls.max_iterations));
   ls.function_tolerance = r.number("function_tolerance").value_or(ls.function_tolerance);
   ls.gradient_tolerance = r.number("gradient_tolerance").value_or(ls.gradient_tolerance);
   ls.parameter_tolerance = r.number("parameter_tolerance").value_or(ls.parameter_tolerance);
-  if (const auto fd = r.string("fd")) {
-    if (*fd == "central") {
-      o.fd.method = FdMethod::kCentral;
-    } else if (*fd == "ridders") {
-      o.fd.method = FdMethod::kRidders;
-    } else {
-      throw InputError(fmt::format("{}: '{}' (central, ridders)", r.where_key("fd"), *fd));
-    }
+  if (const auto fd = r.choice("fd")) {
+    o.fd.method = *fd == "ridders" ? FdMethod::kRidders : FdMethod::kCentral;
   }
   o.fd.relative_step = r.number("relative_step").value_or(o.fd.relative_step);
   o.fd.ridders_levels = static_cast<int>(r.integer("ridders_levels").value_or(o.fd.ridders_levels));
   o.threads = static_cast<int>(r.integer("threads").value_or(o.threads));
-  o.global.algorithm = r.string("global_algorithm").value_or(o.global.algorithm);
-  const auto seed = r.integer("seed");
-  if (seed && *seed < 0) throw InputError(fmt::format("{}: must be >= 0", r.where_key("seed")));
-  if (seed) o.global.seed = static_cast<unsigned long>(*seed);
+  o.global.algorithm = r.choice("global_algorithm").value_or(o.global.algorithm);
+  if (const auto seed = r.integer("seed")) o.global.seed = static_cast<unsigned long>(*seed);
   o.global.max_evaluations =
       static_cast<int>(r.integer("max_evaluations").value_or(o.global.max_evaluations));
   r.finish();
@@ -265,17 +377,12 @@ void read_forward(const toml::table* t, const std::string& file, ForwardSettings
 }  // namespace
 
 CalibrationConfig load_calibration_config(const std::string& path) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(fmt::format("{}:{}:{}: {}", path, e.source().begin.line,
-                                 e.source().begin.column, e.description()));
-  }
+  const toml::table root = parse_toml_file(path, "calibration config");
   const std::string base_dir = fs::path(path).parent_path().string();
   CalibrationConfig config;
   config.path = path;
-  TableReader top(root, path, "");
+  TableReader top(root, path, "",
+                  {"parameter", "data", "optimizer", "uncertainty", "forward", "output"});
   config.scenes = read_scenes(top, path, base_dir);
   for (const toml::table* t : table_array(top, "parameter")) {
     config.parameters.push_back(read_parameter(*t, path));
@@ -304,6 +411,30 @@ CalibrationConfig load_calibration_config(const std::string& path) {
   }
   validate_calibration_config(check);
   return config;
+}
+
+DataSigma data_set_sigma(const DataSpec& d) {
+  const Measurement& m = d.measurement;
+  const std::string unit = m.kind == MeasurementKind::kLoadTravel ? " N" : "";
+  if (!m.point_sigma.empty()) return {0.0, "sigma per point (the file's sigma column)"};
+  if (d.sigma > 0.0) return {d.sigma, fmt::format("sigma = {:.4g}{} (given)", d.sigma, unit)};
+  if (d.weight > 0.0) return {0.0, fmt::format("weight = {:.4g} (given)", d.weight)};
+  double range = 0.0;
+  if (!m.y.empty()) {
+    const auto [lo, hi] = std::minmax_element(m.y.begin(), m.y.end());
+    range = *hi - *lo;
+  }
+  if (!(range > 0.0) || !std::isfinite(range)) {
+    throw InputError(fmt::format(
+        "{}: data set '{}' gives no sigma, weight or sigma column, and its measured values do "
+        "not vary, so the default sigma (relative_sigma x their range) would be 0: set sigma "
+        "(its standard deviation, in N or strain) or weight",
+        d.where, m.name));
+  }
+  const double sigma = d.relative_sigma * range;
+  return {sigma, fmt::format("sigma = {:.4g}{} (default: {:g} % of the measured range {:.4g}{}; "
+                             "set sigma to state it)",
+                             sigma, unit, 100.0 * d.relative_sigma, range, unit)};
 }
 
 void validate_calibration_config(const CalibrationConfig& config) {
@@ -338,8 +469,22 @@ void validate_calibration_config(const CalibrationConfig& config) {
 
   if (config.data.empty()) throw InputError(fmt::format("{}: no [[data]]", file));
   std::set<std::string> names;
+  std::map<std::string, const DataSpec*> files;  // canonical file -> first data set reading it
   std::size_t points = 0;
   for (const auto& d : config.data) {
+    std::error_code ec;
+    if (fs::is_regular_file(d.measurement.file, ec)) {  // not for data made in code
+      std::string key = fs::weakly_canonical(d.measurement.file, ec).string();
+      if (ec) key = d.measurement.file;
+      const auto [it, inserted] = files.emplace(key, &d);
+      if (!inserted) {
+        throw InputError(fmt::format(
+            "{}: data set '{}' reads {}, which data set '{}' ({}) reads already: its points "
+            "would count twice",
+            d.where, d.measurement.name, d.measurement.file, it->second->measurement.name,
+            it->second->where));
+      }
+    }
     const Measurement& m = d.measurement;
     if (m.x.empty()) throw InputError(fmt::format("{}: data set '{}' is empty", d.where, m.name));
     if (m.x.size() != m.y.size() ||
@@ -364,12 +509,7 @@ void validate_calibration_config(const CalibrationConfig& config) {
     if (d.sigma > 0.0 && d.weight > 0.0) {
       throw InputError(fmt::format("{}: give sigma or weight, not both", d.where));
     }
-    if (d.sigma == 0.0 && d.weight == 0.0 && m.point_sigma.empty()) {
-      throw InputError(fmt::format(
-          "{}: data set '{}' needs sigma (its standard deviation, in N or strain), weight, or a "
-          "sigma column: residuals of different quantities must be scaled to be comparable",
-          d.where, m.name));
-    }
+    data_set_sigma(d);  // a relative default needs a curve that varies
     if (m.x.front() < 0.0) {
       throw InputError(fmt::format("{}: data set '{}': {} must be >= 0", d.where, m.name,
                                    abscissa_name(m.kind)));

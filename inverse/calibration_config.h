@@ -1,57 +1,10 @@
-// A calibration, as read from its TOML file:
+// A calibration, as read from its TOML file. Every key is declared once, with type, unit, range,
+// default and documentation, in calibration_keys.cc; docs/calibration-reference.md is generated
+// from that declaration (vshell print-calibration-reference).
 //
-//   scene = "../scenes/ex1_hemispherical_stretching.toml"   # relative to this file
-//   # or several scenes, each data set then names its scene:
-//   # [[scene]]  name = "stretch"  file = "stretch.toml"
-//
-//   [[parameter]]
-//   address = "tool.punch.friction"   # dotted scene address (scene/scene_table.h)
-//   initial = 0.05                    # default: the scene's value
-//   lower = 0.0                       # default: -inf (global search needs finite bounds)
-//   upper = 0.5                       # default: +inf
-//   scale = 0.01                      # typical magnitude; default: |initial| (1 if 0)
-//   fixed = false
-//
-//   [[data]]
-//   kind = "load_travel"              # | thickness_strain | circumferential_strain
-//   file = "load.csv"                 # relative to this file (measurement.h for the format)
-//   sigma = 50.0                      # std dev in internal units (N, strain); or weight = ...
-//   travel_mm = 20                    # profiles only: the punch travel they were taken at
-//   name = "load"                     # optional label; default: file name without .csv
-//   scene = "stretch"                 # only with several scenes
-//
-//   [optimizer]
-//   method = "levenberg_marquardt"    # | "global_then_local"
-//   max_iterations = 50               # Ceres iterations
-//   function_tolerance = 1e-10
-//   gradient_tolerance = 1e-12
-//   parameter_tolerance = 1e-10
-//   fd = "central"                    # | "ridders"
-//   relative_step = 2e-3              # FD step = relative_step * scale
-//   ridders_levels = 3
-//   threads = 2                       # parallel forward runs
-//   global_algorithm = "mlsl_lds"     # global_then_local: | crs2 | direct | bobyqa
-//   seed = 1                          # global_then_local: NLopt seed
-//   max_evaluations = 200             # global_then_local: NLopt evaluation limit
-//
-//   [uncertainty]
-//   confidence = 0.95
-//   scale_by_residual_variance = true
-//   correlation_threshold = 0.95
-//   relative_error_threshold = 0.1
-//
-//   [forward]
-//   tolerance = 1e-9                  # overrides numerics.tolerance during calibration
-//   [forward.set]                     # any other scene edits, e.g. a coarser mesh
-//   "blank.elements" = 24
-//
-//   [output]
-//   directory = "calib_out"           # relative to the current working directory
-//   plots = true
-//
-// Unknown keys and wrong types are InputErrors naming file:line and the key. The measurement
-// files are read and checked here too, so every configuration and data error is raised before
-// any forward run.
+// Unknown keys, wrong types and out-of-range values are InputErrors naming file:line and the key.
+// The measurement files are read and checked here too, so every configuration and data error is
+// raised before any forward run.
 #pragma once
 
 #include <string>
@@ -73,13 +26,28 @@ struct SceneEntry {
   std::string where;  // config file:line
 };
 
+// Default data.relative_sigma: a data set with no sigma, weight or sigma column gets
+// sigma = 1 % of the range (max - min) of its measured ordinate.
+inline constexpr double kDefaultRelativeSigma = 0.01;
+
 struct DataSpec {
   Measurement measurement;  // already read and checked; name and travel_mm filled in
   std::string scene;        // SceneEntry::name; empty = the only scene
   double sigma = 0.0;       // > 0: weights 1/sigma (unless the CSV has a sigma column)
   double weight = 0.0;      // > 0: weights = weight
-  std::string where;        // config file:line
+  // Used when sigma, weight and the sigma column are all absent: sigma = relative_sigma x the
+  // range of the measured ordinate (data_set_sigma()).
+  double relative_sigma = kDefaultRelativeSigma;
+  std::string where;  // config file:line
 };
+
+// How a data set's points are weighted, for the weights and the report.
+struct DataSigma {
+  double sigma = 0.0;  // per-point sigma when uniform (0 with a sigma column or a weight)
+  std::string text;    // "sigma = 50 N (given)", "sigma = 0.0021 (1 % of the measured range)"
+};
+// Throws InputError for a relative default on a curve of zero range.
+DataSigma data_set_sigma(const DataSpec& d);
 
 enum class OptimizerMethod { kLevenbergMarquardt, kGlobalThenLocal };
 

@@ -2,12 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <optional>
+#include <string_view>
 
 #include "core/error.h"
+#include "scene/text_checks.h"
 
 namespace vs {
 namespace {
@@ -58,44 +61,129 @@ struct Columns {
   int ordinate = -1;
   int sigma = -1;
   double ordinate_factor = 1.0;
+  std::string ordinate_name;
+  std::size_t count = 0;  // cells per row
 };
 
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+// `ignore_others`: columns that are not needed are skipped (vshell outputs, mapped columns).
 Columns parse_header(const std::vector<std::string>& names, MeasurementKind kind,
-                     const std::string& where) {
+                     const std::string& where, bool ignore_others) {
   Columns columns;
+  columns.count = names.size();
   const auto ordinates = accepted_ordinates(kind);
   for (std::size_t i = 0; i < names.size(); ++i) {
     const int index = static_cast<int>(i);
     const std::string& name = names[i];
     bool known = false;
+    bool repeated = false;
     if (name == abscissa_name(kind)) {
-      known = columns.abscissa < 0;
+      known = true;
+      repeated = columns.abscissa >= 0;
       columns.abscissa = index;
     } else if (name == "sigma") {
-      known = columns.sigma < 0;
+      known = true;
+      repeated = columns.sigma >= 0;
       columns.sigma = index;
     } else {
       for (const auto& [ordinate, factor] : ordinates) {
         if (name != ordinate) continue;
-        known = columns.ordinate < 0;
+        known = true;
+        repeated = columns.ordinate >= 0;
         columns.ordinate = index;
         columns.ordinate_factor = factor;
+        columns.ordinate_name = ordinate;
       }
     }
-    if (!known) {
+    if (repeated || (!known && !ignore_others)) {
       std::string allowed = abscissa_name(kind);
       for (const auto& ordinate : ordinates) allowed += ", " + ordinate.first;
-      throw InputError(
-          fmt::format("{}: unknown or repeated column '{}' for {} data (allowed: {}, "
-                      "sigma)",
-                      where, name, to_string(kind), allowed));
+      throw InputError(fmt::format(
+          "{}: {} column '{}'{} for {} data (allowed: {}, sigma; or map the file's columns "
+          "with data.columns)",
+          where, repeated ? "repeated" : "unknown", show_invisible(name), invisible_note(name),
+          to_string(kind), allowed));
     }
   }
   if (columns.abscissa < 0 || columns.ordinate < 0) {
-    throw InputError(fmt::format("{}: {} data needs columns {} and {}", where, to_string(kind),
-                                 abscissa_name(kind), ordinates.front().first));
+    throw InputError(fmt::format("{}: {} data needs columns {} and {}; the header has {}", where,
+                                 to_string(kind), abscissa_name(kind), ordinates.front().first,
+                                 show_invisible(join(names))));
   }
   return columns;
+}
+
+// The header names with the mapping applied: {known, header in file} renames that column.
+std::vector<std::string> apply_mapping(const std::vector<std::string>& header,
+                                       const MeasurementColumns& mapping, MeasurementKind kind,
+                                       const std::string& where) {
+  std::vector<std::string> names = header;
+  std::vector<std::string> known = {abscissa_name(kind), "sigma"};
+  for (const auto& ordinate : accepted_ordinates(kind)) known.push_back(ordinate.first);
+  for (const auto& [to, from] : mapping) {
+    if (std::find(known.begin(), known.end(), to) == known.end()) {
+      throw InputError(fmt::format("{}: data.columns maps '{}', which is not a {} column ({})",
+                                   where, to, to_string(kind), join(known)));
+    }
+    const auto it = std::find(header.begin(), header.end(), from);
+    if (it == header.end()) {
+      throw InputError(
+          fmt::format("{}: data.columns maps {} to '{}', which is not in the header ({})", where,
+                      to, from, show_invisible(join(header))));
+    }
+    names[static_cast<std::size_t>(it - header.begin())] = to;
+  }
+  return names;
+}
+
+// Units as written on the "# units:" line: comma-separated, "(remarks)" removed.
+std::vector<std::string> parse_units(const std::string& text) {
+  std::string plain;
+  int depth = 0;
+  for (char c : text) {
+    if (c == '(') ++depth;
+    if (depth == 0) plain += c;
+    if (c == ')' && depth > 0) --depth;
+  }
+  std::vector<std::string> units;
+  for (const std::string& u : split_commas(plain)) {
+    if (!u.empty()) units.push_back(u);
+  }
+  return units;
+}
+
+// The "# units:" line must name only known units and include the unit of each column used.
+void check_units(const std::string& text, const Columns& columns, const std::string& where) {
+  static const std::vector<std::string> kKnown = {"mm", "N", "kN", "1", "-", "MPa", "s", "mm/s"};
+  const std::vector<std::string> units = parse_units(text);
+  for (const std::string& u : units) {
+    if (std::find(kKnown.begin(), kKnown.end(), u) == kKnown.end()) {
+      throw InputError(fmt::format("{}: unknown unit '{}'{} on the units line (known: {})", where,
+                                   show_invisible(u), invisible_note(u), join(kKnown)));
+    }
+  }
+  auto has = [&](std::initializer_list<const char*> any) {
+    for (const char* u : any) {
+      if (std::find(units.begin(), units.end(), u) != units.end()) return true;
+    }
+    return false;
+  };
+  const std::string& y = columns.ordinate_name;
+  const bool force_N = y == "punch_force_N";
+  const bool force_kN = y == "punch_force_kN";
+  const char* y_unit = force_N ? "N" : force_kN ? "kN" : "1 (or -)";
+  const bool y_ok = force_N ? has({"N"}) : force_kN ? has({"kN"}) : has({"1", "-"});
+  if (!has({"mm"}) || !y_ok) {
+    throw InputError(fmt::format(
+        "{}: units '{}' do not match the columns: the abscissa is in mm and {} in {} (the units "
+        "line names the unit of each column)",
+        where, text, y, y_unit));
+  }
 }
 
 }  // namespace
@@ -128,58 +216,90 @@ std::string abscissa_name(MeasurementKind kind) {
 
 std::string ordinate_name(MeasurementKind kind) { return accepted_ordinates(kind).front().first; }
 
-Measurement read_measurement_csv(const std::string& path, MeasurementKind kind) {
-  std::ifstream in(path);
+Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
+                                 const MeasurementColumns& mapping) {
+  check_text_input_file(path, "measurement file");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open measurement file", path));
 
   Measurement m;
   m.kind = kind;
   m.file = path;
   std::optional<Columns> columns;
+  bool vshell_output = false;  // load_travel.csv or strains_travel_<T>mm.csv as written
+  std::string units_text;
+  int units_line = 0;
   std::string line;
   int line_number = 0;
   while (std::getline(in, line)) {
     ++line_number;
     const std::string where = fmt::format("{}:{}", path, line_number);
-    const std::string text = trim(line);
+    const std::string text = trim(line_number == 1 ? std::string(strip_utf8_bom(line)) : line);
     if (text.empty()) continue;
     if (text.front() == '#') {
       // Provenance is only what precedes the header; later comments are ignored.
       if (columns) continue;
       const std::string body = trim(text.substr(1));
+      constexpr std::string_view kTravel = "punch_travel_mm=";  // vshell strains files
+      if (body.rfind(kTravel, 0) == 0) {
+        // "# punch_travel_mm=10" (axisymmetric) or "# punch_travel_mm=10, line=x" (3D lines).
+        const std::string value = body.substr(kTravel.size());
+        const auto travel = parse_number(trim(value.substr(0, value.find(','))));
+        if (!travel || !(*travel > 0.0) || !std::isfinite(*travel)) {
+          throw InputError(fmt::format("{}: '{}' is not a punch travel", where, body));
+        }
+        m.travel_mm = *travel;
+        vshell_output = true;
+        continue;
+      }
       const auto colon = body.find(':');
       if (colon != std::string::npos) {
         m.provenance.emplace_back(trim(body.substr(0, colon)), trim(body.substr(colon + 1)));
+        if (m.provenance.back().first == "units") {
+          units_text = m.provenance.back().second;
+          units_line = line_number;
+        }
       }
       continue;
     }
     const auto cells = split_commas(text);
     if (!columns) {
-      columns = parse_header(cells, kind, where);
+      // vshell's load_travel.csv starts step,time_s,punch_travel_mm,...
+      vshell_output = vshell_output || (cells.size() > 3 && cells[0] == "step" &&
+                                        cells[1] == "time_s" && cells[2] == "punch_travel_mm");
+      const auto names = mapping.empty() ? cells : apply_mapping(cells, mapping, kind, where);
+      columns = parse_header(names, kind, where, vshell_output || !mapping.empty());
+      // Units against the columns, as soon as both are known (a missing line: below).
+      if (!vshell_output && units_line > 0) {
+        check_units(units_text, *columns, fmt::format("{}:{}", path, units_line));
+      }
       continue;
     }
-    if (cells.size() != 1 + (columns->sigma >= 0 ? 2u : 1u)) {
-      throw InputError(fmt::format("{}: expected {} comma-separated values, found {}", where,
-                                   columns->sigma >= 0 ? 3 : 2, cells.size()));
+    if (cells.size() != columns->count) {
+      throw InputError(fmt::format("{}: expected {} comma-separated values, found {}{}", where,
+                                   columns->count, cells.size(), invisible_note(text)));
     }
-    double values[3] = {0.0, 0.0, 0.0};
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      const auto value = parse_number(cells[i]);
-      if (!value) throw InputError(fmt::format("{}: '{}' is not a number", where, cells[i]));
-      if (!std::isfinite(*value)) {
-        throw InputError(fmt::format("{}: '{}' is not finite", where, cells[i]));
+    auto value_at = [&](int index) {
+      const std::string& cell = cells[static_cast<std::size_t>(index)];
+      const auto value = parse_number(cell);
+      if (!value) {
+        throw InputError(fmt::format("{}: '{}' is not a number{}", where, show_invisible(cell),
+                                     invisible_note(cell)));
       }
-      values[i] = *value;
-    }
-    const double x = values[columns->abscissa];
+      if (!std::isfinite(*value)) {
+        throw InputError(fmt::format("{}: '{}' is not finite", where, cell));
+      }
+      return *value;
+    };
+    const double x = value_at(columns->abscissa);
     if (!m.x.empty() && !(x > m.x.back())) {
       throw InputError(fmt::format("{}: {} = {} does not increase (previous {})", where,
                                    abscissa_name(kind), x, m.x.back()));
     }
     m.x.push_back(x);
-    m.y.push_back(values[columns->ordinate] * columns->ordinate_factor);
+    m.y.push_back(value_at(columns->ordinate) * columns->ordinate_factor);
     if (columns->sigma >= 0) {
-      const double sigma = values[columns->sigma];
+      const double sigma = value_at(columns->sigma);
       if (!(sigma > 0.0)) throw InputError(fmt::format("{}: sigma must be > 0", where));
       m.point_sigma.push_back(sigma * columns->ordinate_factor);
     }
@@ -191,7 +311,10 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind) 
     }
     return false;
   };
-  if (!has_key("source") || !has_key("units")) {
+  if (vshell_output) {
+    if (!has_key("source")) m.provenance.emplace_back("source", "vshell run output " + path);
+    if (!has_key("units")) m.provenance.emplace_back("units", "mm, N, 1 (vshell output)");
+  } else if (!has_key("source") || !has_key("units")) {
     throw InputError(fmt::format(
         "{}: provenance lines '# source: ...' and '# units: ...' are required before the header",
         path));

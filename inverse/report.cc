@@ -17,19 +17,38 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::ordered_json;
 
-// JSON has no inf/NaN: they become null (an undetermined std error, an absent bound).
-ordered_json number(double value) {
-  return std::isfinite(value) ? ordered_json(value) : ordered_json(nullptr);
+// JSON has no inf/NaN, and null would leave readers guessing: a non-finite number is left out
+// (an unbounded side, an undetermined standard error, a cost of a failed run) and the entry
+// says why in words (determined = false, termination = "failed" with its message).
+void put_finite(ordered_json& j, const char* key, double value) {
+  if (std::isfinite(value)) j[key] = value;
 }
 
-ordered_json matrix(const Eigen::MatrixXd& m) {
+// The rows and columns of `m` for the parameters `keep` (those with finite entries).
+ordered_json matrix(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& keep) {
   ordered_json rows = ordered_json::array();
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+  for (Eigen::Index i : keep) {
     ordered_json row = ordered_json::array();
-    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(number(m(i, j)));
+    for (Eigen::Index j : keep) row.push_back(m(i, j));
     rows.push_back(row);
   }
   return rows;
+}
+
+// Free parameters with a finite variance (undetermined ones have NaN rows and columns), so
+// that the covariance and correlation among them are finite.
+std::vector<Eigen::Index> finite_rows(const Eigen::MatrixXd& covariance,
+                                      const Eigen::MatrixXd& correlation) {
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index i = 0; i < covariance.rows(); ++i) {
+    if (std::isfinite(covariance(i, i)) && std::isfinite(correlation(i, i))) keep.push_back(i);
+  }
+  for (Eigen::Index i : keep) {
+    for (Eigen::Index j : keep) {
+      if (!std::isfinite(covariance(i, j)) || !std::isfinite(correlation(i, j))) return {};
+    }
+  }
+  return keep;
 }
 
 std::string axis_label(MeasurementKind kind, bool ordinate) {
@@ -105,37 +124,43 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
       {"threads", config.optimizer.threads},
       {"forward_tolerance", config.forward.tolerance}};
   j["termination"] = to_string(result.termination);
+  if (result.termination == CalibrationTermination::kFailed) j["failure"] = result.message;
   j["ceres_termination"] = result.ceres_termination;
   j["message"] = result.message;
   j["iterations"] = result.iterations;
-  j["initial_cost"] = number(result.initial_cost);
-  j["final_cost"] = number(result.final_cost);
+  put_finite(j, "initial_cost", result.initial_cost);
+  put_finite(j, "final_cost", result.final_cost);
   j["forward_runs"] = result.forward_runs;
   j["evaluations"] = result.evaluations.size();
   j["failed_evaluations"] = result.failed_evaluations;
   j["wall_time_s"] = result.wall_time_s;
   if (result.global_search_used) {
-    j["global_search"] = {{"algorithm", config.optimizer.global.algorithm},
-                          {"seed", config.optimizer.global.seed},
-                          {"max_evaluations", config.optimizer.global.max_evaluations},
-                          {"evaluations", result.global.evaluations},
-                          {"failed_evaluations", result.global.failed_evaluations},
-                          {"best_cost", number(result.global.cost)},
-                          {"result", result.global.result}};
+    ordered_json global = {{"algorithm", config.optimizer.global.algorithm},
+                           {"seed", config.optimizer.global.seed},
+                           {"max_evaluations", config.optimizer.global.max_evaluations},
+                           {"evaluations", result.global.evaluations},
+                           {"failed_evaluations", result.global.failed_evaluations}};
+    put_finite(global, "best_cost", result.global.cost);
+    global["result"] = result.global.result;
+    j["global_search"] = global;
   }
 
   ordered_json parameters = ordered_json::array();
   std::size_t k = 0;
   for (const auto& p : result.parameters) {
-    ordered_json entry = {{"address", p.spec.address},     {"unit", p.unit},
-                          {"fixed", p.spec.fixed},         {"initial", p.spec.initial},
-                          {"lower", number(p.spec.lower)}, {"upper", number(p.spec.upper)},
-                          {"scale", p.spec.scale},         {"value", p.value}};
+    ordered_json entry = {{"address", p.spec.address},
+                          {"unit", p.unit},
+                          {"fixed", p.spec.fixed},
+                          {"initial", p.spec.initial}};
+    put_finite(entry, "lower", p.spec.lower);  // absent: unbounded
+    put_finite(entry, "upper", p.spec.upper);
+    entry["scale"] = p.spec.scale;
+    entry["value"] = p.value;
     if (!p.spec.fixed && result.uncertainty_available) {
       const auto& u = result.uncertainty.parameters.at(k);
-      entry["std_error"] = number(u.std_error);
-      entry["interval_lower"] = number(u.interval_lower);
-      entry["interval_upper"] = number(u.interval_upper);
+      put_finite(entry, "std_error", u.std_error);  // absent: not determined
+      put_finite(entry, "interval_lower", u.interval_lower);
+      put_finite(entry, "interval_upper", u.interval_upper);
       entry["determined"] = u.determined;
       entry["at_bound"] = u.at_bound;
     }
@@ -146,35 +171,45 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
 
   if (result.uncertainty_available) {
     const auto& u = result.uncertainty;
-    j["uncertainty"] = {{"confidence", config.uncertainty.confidence},
-                        {"quantile", u.quantile},
-                        {"quantile_kind", u.quantile_kind},
-                        {"residual_variance", u.residual_variance},
-                        {"degrees_of_freedom", u.degrees_of_freedom},
-                        {"rank", u.rank},
-                        {"condition_number", number(u.condition_number)},
-                        {"singular_values", u.singular_values},
-                        {"free_parameters",
-                         [&] {
-                           std::vector<std::string> names;
-                           for (const auto& pu : u.parameters) names.push_back(pu.name);
-                           return names;
-                         }()},
-                        {"correlation", matrix(u.correlation)},
-                        {"covariance", matrix(u.covariance)},
-                        {"statements", u.statements}};
+    std::vector<std::string> names;
+    for (const auto& pu : u.parameters) names.push_back(pu.name);
+    const std::vector<Eigen::Index> keep = finite_rows(u.covariance, u.correlation);
+    std::vector<std::string> matrix_names;
+    for (Eigen::Index i : keep) matrix_names.push_back(names.at(static_cast<std::size_t>(i)));
+    ordered_json uj = {{"confidence", config.uncertainty.confidence},
+                       {"quantile", u.quantile},
+                       {"quantile_kind", u.quantile_kind},
+                       {"residual_variance", u.residual_variance},
+                       {"degrees_of_freedom", u.degrees_of_freedom},
+                       {"rank", u.rank}};
+    put_finite(uj, "condition_number", u.condition_number);  // absent: rank deficient
+    uj["singular_values"] = u.singular_values;
+    uj["free_parameters"] = names;
+    // Covariance and correlation over the determined parameters only (the others have no
+    // finite entries).
+    uj["matrix_parameters"] = matrix_names;
+    uj["correlation"] = matrix(u.correlation, keep);
+    uj["covariance"] = matrix(u.covariance, keep);
+    uj["statements"] = u.statements;
+    j["uncertainty"] = uj;
   } else {
     j["uncertainty"] = {{"unavailable", result.uncertainty_message}};
   }
 
+  ordered_json weighting = ordered_json::array();
+  for (const auto& w : result.data_weighting) {
+    weighting.push_back(
+        {{"name", w.name}, {"weighting", w.text}, {"relative_default", w.relative_default}});
+  }
+  j["data_weighting"] = weighting;
+
   ordered_json data = ordered_json::array();
   for (const auto& fit : result.fits) {
-    ordered_json entry = {{"name", fit.name},
-                          {"kind", to_string(fit.kind)},
-                          {"points", fit.x.size()},
-                          {"cost", number(fit.cost)},
-                          {"rms_difference", number(fit.rms_difference)},
-                          {"rms_unit", fit.kind == MeasurementKind::kLoadTravel ? "N" : "1"}};
+    ordered_json entry = {
+        {"name", fit.name}, {"kind", to_string(fit.kind)}, {"points", fit.x.size()}};
+    put_finite(entry, "cost", fit.cost);
+    put_finite(entry, "rms_difference", fit.rms_difference);
+    entry["rms_unit"] = fit.kind == MeasurementKind::kLoadTravel ? "N" : "1";
     if (fit.kind != MeasurementKind::kLoadTravel) entry["travel_mm"] = fit.travel_mm;
     data.push_back(entry);
   }
@@ -190,7 +225,9 @@ std::string evaluations_csv(const CalibrationResult& result) {
   }
   text += ",message\n";
   for (const auto& e : result.evaluations) {
-    text += fmt::format("{},{},{},{}", e->index, e->ok ? "ok" : "failed", format_number(e->cost),
+    // A failed point has no cost: the cell is left empty (status says failed).
+    text += fmt::format("{},{},{},{}", e->index, e->ok ? "ok" : "failed",
+                        e->ok && std::isfinite(e->cost) ? format_number(e->cost) : "",
                         format_number(e->wall_time_s));
     for (Eigen::Index i = 0; i < e->x.size(); ++i)
       text += fmt::format(",{}", format_number(e->x[i]));

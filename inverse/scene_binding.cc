@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "scene/load_scene.h"
+#include "scene/scene_keys.h"
 #include "scene/scene_table.h"
 
 namespace vs {
@@ -88,6 +89,10 @@ Scene SceneBinding::bind(const std::vector<double>& values) const {
 
 double SceneBinding::value_of(const std::string& address) const {
   return get_scene_number(table_, address);
+}
+
+bool SceneBinding::is_integer(const std::string& address) const {
+  return scene_address_key(table_, address).type == KeyType::kInt;
 }
 
 Scene SceneBinding::base_scene() const { return scene_from_table(table_, source_, base_dir_); }

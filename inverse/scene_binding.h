@@ -49,6 +49,9 @@ class SceneBinding {
   // The number at `address` in the configured base scene (its default when the file omits it).
   double value_of(const std::string& address) const;
 
+  // Whether `address` names an integer key (blank.elements, ...).
+  bool is_integer(const std::string& address) const;
+
   const std::string& source() const { return source_; }
   bool applies(int parameter) const { return applies_.at(parameter); }
 

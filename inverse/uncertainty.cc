@@ -118,12 +118,20 @@ UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double 
           "in its null space): its value is where the optimiser left it, not a result",
           u.name, rank, p));
     } else {
-      const double relative = u.std_error / std::max(std::abs(u.value), 1e-300);
+      // Relative to the value, or to the declared typical magnitude when the value is near
+      // zero (a friction of 0 +- 0.001 is well determined; 0.001 / 0 is not a percentage).
+      const bool near_zero = std::abs(u.value) < 0.01 * scale[j];
+      const double reference = near_zero ? scale[j] : std::abs(u.value);
+      const double relative = u.std_error / reference;
       if (relative > options.relative_error_threshold) {
         u.determined = false;
         out.statements.push_back(
-            fmt::format("{} is poorly determined: standard error {:.3g} is {:.0f}% of its value",
-                        u.name, u.std_error, 100.0 * relative));
+            near_zero ? fmt::format("{} is poorly determined: standard error {:.3g} is {:.3g}% of "
+                                    "its scale {:.3g} (the value {:.3g} is near zero)",
+                                    u.name, u.std_error, 100.0 * relative, scale[j], u.value)
+                      : fmt::format("{} is poorly determined: standard error {:.3g} is {:.3g}% of "
+                                    "its value",
+                                    u.name, u.std_error, 100.0 * relative));
       }
     }
     if (u.at_bound) {

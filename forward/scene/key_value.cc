@@ -33,9 +33,13 @@ std::string quoted_list(const std::vector<std::string_view>& choices, bool quote
 void check_range(const KeySpec& key, double x, const toml::node& node, const std::string& address,
                  const std::string& source) {
   if (!key.range.contains(x)) {
+    const bool beyond_resource_bound =
+        key.type != KeyType::kFloatArray && !key.bound_reason.empty() &&
+        (key.bound_reason_below ? x < key.range.lo : x > key.range.hi);
     fail_at(source, node.source(),
-            fmt::format("{} = {} is out of range {}{}", address, number_text(x), key.range.text(),
-                        unit_suffix(key)));
+            fmt::format("{} = {} is out of range {}{}{}", address, number_text(x), key.range.text(),
+                        unit_suffix(key),
+                        beyond_resource_bound ? ": " + std::string(key.bound_reason) : ""));
   }
 }
 
@@ -91,6 +95,12 @@ std::vector<double> read_float_array(const KeySpec& key, const toml::node& node,
   if (array == nullptr) {
     fail_at(where.source(), node.source(),
             fmt::format("{}: expected an array of numbers, got {}", address, toml_type_name(node)));
+  }
+  if (key.max_items > 0 && array->size() > key.max_items) {
+    fail_at(where.source(), node.source(),
+            fmt::format("{} has {} values, more than the {} allowed{}", address, array->size(),
+                        key.max_items,
+                        key.bound_reason.empty() ? "" : ": " + std::string(key.bound_reason)));
   }
   std::vector<double> values;
   for (std::size_t i = 0; i < array->size(); ++i) {
@@ -176,6 +186,7 @@ void store_key_value(const KeySpec& key, const toml::node& node, const std::stri
       if (f.numbers) f.numbers(scene, tool) = read_float_array(key, node, address, where);
       return;
     case KeyType::kPairArray:
+    case KeyType::kTable:
       return;
   }
 }

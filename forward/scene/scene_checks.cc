@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace vs {
 
 namespace {
@@ -139,6 +142,74 @@ void check_process(const Scene& scene, const SceneSourceMap& where) {
   }
 }
 
+// Shortest initial element length (axisymmetric: geometric grading, last/first = grading) or a
+// lower estimate of the 9-node element size sqrt(area) (shell3d: the quarter circle's blocks
+// are about radius / (2 divisions) across, the quarter square's radius / divisions).
+double shortest_element_mm(const Scene& scene) {
+  const BlankSpec& b = scene.blank;
+  if (scene.geometry == Geometry::kShell3d) {
+    return b.radius_mm / (b.shape == BlankShape::kCircle ? 2.0 * b.divisions : b.divisions);
+  }
+  const int n = b.elements;
+  if (b.grading == 1.0 || n < 2) return b.radius_mm / n;
+  const double q = std::pow(b.grading, 1.0 / (n - 1));
+  const double first = b.radius_mm * (q - 1.0) / (std::pow(q, n) - 1.0);
+  return std::min(first, first * b.grading);
+}
+
+int element_count(const Scene& scene) {
+  const BlankSpec& b = scene.blank;
+  if (scene.geometry == Geometry::kAxisymmetric) return b.elements;
+  const int quarter = (b.shape == BlankShape::kCircle ? 3 : 1) * b.divisions * b.divisions;
+  return b.symmetry == BlankSymmetry::kFull ? 4 * quarter : quarter;
+}
+
+// Steps end on a travel grid no coarser than the smaller travel cap, so a run takes at least
+// travel / cap steps, each costing time (and, with output.history, memory) in proportion to the
+// element count. Scenes beyond what a 2-core, 24 GB machine finishes in hours are errors.
+void check_run_size(const Scene& scene, const SceneSourceMap& where) {
+  const NumericsSpec& nu = scene.numerics;
+  const double shortest = shortest_element_mm(scene);
+  const double per_length_cap = nu.max_travel_increment_per_length * shortest;
+  const double cap = std::min(nu.max_travel_increment_mm, per_length_cap);
+  const double steps = scene.process.punch_travel_mm / cap;
+  const std::string cap_key = per_length_cap < nu.max_travel_increment_mm
+                                  ? "numerics.max_travel_increment_per_length"
+                                  : "numerics.max_travel_increment_mm";
+  const std::string cap_text =
+      per_length_cap < nu.max_travel_increment_mm
+          ? fmt::format("{} = {} x the shortest element ({:.3g} mm) = {:.3g} mm", cap_key,
+                        nu.max_travel_increment_per_length, shortest, cap)
+          : fmt::format("{} = {} mm", cap_key, cap);
+  if (steps > kMaxRunSteps) {
+    where.fail(
+        cap_key,
+        fmt::format("process.punch_travel_mm = {} mm in steps of at most {} takes at "
+                    "least {:.3g} steps, more than the {:.0e} a run may take: raise {} or shorten "
+                    "process.punch_travel_mm",
+                    scene.process.punch_travel_mm, cap_text, steps, kMaxRunSteps, cap_key));
+  }
+  const bool shell3d = scene.geometry == Geometry::kShell3d;
+  const double elements = element_count(scene);
+  const double work = steps * elements;
+  const double limit = shell3d ? kMaxElementSteps3d : kMaxElementStepsAxisym;
+  if (work > limit) {
+    const std::string size_key = shell3d ? "blank.divisions" : "blank.elements";
+    where.fail(size_key,
+               fmt::format("{} elements over at least {:.3g} steps ({} in steps of at most {}) "
+                           "is {:.2g} element-steps, more than the {:.0e} allowed for {} runs "
+                           "({}): use fewer elements ({}), a larger {} or a shorter "
+                           "process.punch_travel_mm",
+                           static_cast<int>(elements), steps,
+                           fmt::format("{} mm", scene.process.punch_travel_mm), cap_text, work,
+                           limit, shell3d ? "shell3d" : "axisymmetric",
+                           shell3d ? "about 2 ms each on 2 cores: hours"
+                                   : "about 10 us and, with output.history, 150 bytes each: "
+                                     "tens of minutes and 15 GB",
+                           size_key, cap_key));
+  }
+}
+
 }  // namespace
 
 void check_scene_consistency(const Scene& scene, const SceneSourceMap& where) {
@@ -146,6 +217,7 @@ void check_scene_consistency(const Scene& scene, const SceneSourceMap& where) {
   check_tools(scene, roles, where);
   check_blank(scene, roles, where);
   check_process(scene, where);
+  check_run_size(scene, where);
 }
 
 const std::vector<std::string_view>& scene_consistency_rules() {
@@ -161,6 +233,13 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "`edge = \"free\"` requires a die (otherwise nothing holds the sheet).",
       "Thin shell: blank `thickness_mm` < blank `radius_mm` / 5.",
       "`output_travels_mm` strictly increasing, each in (0, `punch_travel_mm`].",
+      "Run size: steps end on a travel grid no coarser than min(`max_travel_increment_mm`, "
+      "`max_travel_increment_per_length` x the shortest element), so a run takes at least "
+      "`punch_travel_mm` / that cap steps; at most 1e6 steps, and at most 1e8 element-steps "
+      "(steps x elements; axisymmetric: about 10 us and, with `output.history`, 150 bytes each) "
+      "or 5e6 element-steps for `shell3d` (about 2 ms each on 2 cores). The 3D element size is "
+      "estimated as `radius_mm` / (2 `divisions`) for circles and `radius_mm` / `divisions` for "
+      "squares.",
       "Keys marked 'axisymmetric only' / 'shell3d only' are rejected in scenes of the other "
       "`geometry`; `geometry = \"shell3d\"` has no fixed-gap blank holder (`gap_mm`) yet.",
   };

@@ -28,6 +28,8 @@ std::string type_text(const KeySpec& key) {
       return "array of float";
     case KeyType::kPairArray:
       return "array of [float, float]";
+    case KeyType::kTable:
+      return "table";
   }
   return "";
 }
@@ -48,6 +50,7 @@ std::string allowed_text(const KeySpec& key, bool markdown) {
       key.type == KeyType::kFloatArray) {
     std::string out = key.range.text();
     if (key.sticking_alias) out += markdown ? " or `\"sticking\"`" : " or \"sticking\"";
+    if (key.max_items > 0) out += fmt::format(", at most {} values", key.max_items);
     return out;
   }
   if (key.identifier) return "[A-Za-z0-9_]+";
@@ -59,7 +62,8 @@ std::string applies_text(const KeySpec& key) {
   if (key.applies_to.empty()) return "";
   std::string out;
   for (std::string_view v : key.applies_to) out += (out.empty() ? "" : ", ") + std::string(v);
-  return fmt::format("{} {}", find_selector(key.section)->label, out);
+  const VariantSelector* selector = find_selector(key.section);
+  return selector != nullptr ? fmt::format("{} {}", selector->label, out) : out;
 }
 
 // Whether the key is used by the section's default variant (so its default line is active).
@@ -106,16 +110,27 @@ void append_markdown_row(std::string& out, const KeySpec& key) {
     default_text = "required";
   } else if (default_text.empty()) {
     default_text = "none";
-  } else {
+  } else if (default_text.front() != '(') {  // "(the scene's value)": words, not TOML
     default_text = fmt::format("`{}`", default_text);
   }
-  out += fmt::format(
-      "| `{}` | {} | {} | {} | {} | {} | {} |\n", key.name, type_text(key), default_text,
-      key.unit.empty() ? "-" : std::string(key.unit), escape_cell(allowed_text(key, true)),
-      applies_text(key).empty() ? "all" : escape_cell(applies_text(key)), escape_cell(key.doc));
+  out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", key.name, type_text(key),
+                     escape_cell(default_text), key.unit.empty() ? "-" : std::string(key.unit),
+                     escape_cell(allowed_text(key, true)),
+                     applies_text(key).empty() ? "all" : escape_cell(applies_text(key)),
+                     escape_cell(key.doc));
 }
 
 }  // namespace
+
+std::string key_table_markdown(const std::vector<KeySpec>& keys, std::string_view section) {
+  std::string out =
+      "| key | type | default | unit | allowed | applies to | description |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const KeySpec& key : keys) {
+    if (key.section == section) append_markdown_row(out, key);
+  }
+  return out;
+}
 
 std::string scene_defaults_toml() {
   std::string out =
@@ -235,12 +250,7 @@ std::string scene_reference_markdown() {
           "error.\n\n",
           selector->key, selector->label);
     }
-    out += "| key | type | default | unit | allowed | applies to | description |\n";
-    out += "|---|---|---|---|---|---|---|\n";
-    for (const KeySpec& key : scene_keys()) {
-      if (key.section == section.name) append_markdown_row(out, key);
-    }
-    out += "\n";
+    out += key_table_markdown(scene_keys(), section.name) + "\n";
   }
   out +=
       "## Hardening table files\n\n"

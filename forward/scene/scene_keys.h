@@ -5,6 +5,7 @@
 // are read from a default-constructed Scene / ToolSpec (the in-class defaults of scene.h).
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -22,6 +23,7 @@ enum class KeyType {
   kEnum,        // string from KeySpec::choices
   kFloatArray,  // [x, ...]; KeySpec::range applies to each element
   kPairArray,   // [[x, y], ...] (the inline hardening table)
+  kTable,       // a table of keys the owner reads itself (calibration: [forward.set], columns)
 };
 
 // Interval of allowed values; an infinite bound is written inf and is only reachable if closed.
@@ -57,8 +59,13 @@ struct KeySpec {
   std::string_view section;  // "" (top level), "blank", "material.hardening", "tool", ...
   std::string_view name;
   KeyType type = KeyType::kFloat;
-  std::string_view unit;                  // "" for dimensionless
-  Range range;                            // kFloat, kInt, kFloatArray
+  std::string_view unit;      // "" for dimensionless
+  Range range;                // kFloat, kInt, kFloatArray
+  std::size_t max_items = 0;  // kFloatArray: most values allowed; 0 = no limit
+  // Why the range stops where it does, when that is a resource bound rather than physics;
+  // appended to out-of-range messages ("... is out of range [4, 2000]: <bound_reason>").
+  std::string_view bound_reason;
+  bool bound_reason_below = false;        // the reason is for the lower bound (else the upper one)
   std::vector<std::string_view> choices;  // kEnum: allowed strings; kInt: allowed values if set
   // Variants of the section's selector (hardening law, rate law, tool kind) this key is used by;
   // empty = every variant.
@@ -71,6 +78,9 @@ struct KeySpec {
   std::string_view geometry;
   std::string_view doc;
   KeyField field;
+  // Registries not backed by Scene (the calibration config, inverse/calibration_keys.cc): the
+  // default as TOML text, computed from the owner's default-constructed options ("" = none).
+  std::string (*default_text)() = nullptr;
 
   std::string address_in_section() const;  // "blank.radius_mm", "tool.friction", "title"
 };
@@ -111,5 +121,9 @@ double default_number(const KeySpec& key);
 
 // TOML text of a double: always shows it is a float ("500.0", "1e-06", "inf").
 std::string float_toml_text(double x);
+
+// The Markdown table (key, type, default, unit, allowed, applies to, description) of the keys of
+// `section` in `keys`, as in docs/scene-reference.md; also used for the calibration reference.
+std::string key_table_markdown(const std::vector<KeySpec>& keys, std::string_view section);
 
 }  // namespace vs

@@ -6,16 +6,14 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
 #include "scene/did_you_mean.h"
 #include "scene/scene_diagnostics.h"
 #include "scene/scene_keys.h"
+#include "scene/toml_guard.h"
 
 namespace vs {
 
@@ -137,22 +135,11 @@ bool is_numeric(const KeySpec& key) {
 }  // namespace
 
 toml::table read_scene_table(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in || !std::filesystem::is_regular_file(path)) {
-    throw InputError(fmt::format("cannot open scene file '{}'", path));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  try {
-    return toml::parse(text.str(), path);
-  } catch (const toml::parse_error& e) {
-    // toml++ descriptions are single sentences; keep the message on one line regardless.
-    std::string description(e.description());
-    for (char& c : description) {
-      if (c == '\n' || c == '\r') c = ' ';
-    }
-    fail_at(path, e.source(), description);
-  }
+  return parse_toml_file(path, "scene file");
+}
+
+const KeySpec& scene_address_key(const toml::table& table, const std::string& address) {
+  return *resolve(table, address).key;
 }
 
 double get_scene_number(const toml::table& table, const std::string& address) {
@@ -201,7 +188,9 @@ void set_scene_value_from_text(toml::table& table, const std::string& address,
   // Let the TOML parser type the text (numbers, inf, true/false, "quoted", arrays); anything it
   // does not accept is taken as a bare string (--set tool.punch.friction=sticking).
   try {
-    const toml::table parsed = toml::parse("value = " + text);
+    const std::string statement = "value = " + text;
+    check_toml_text(statement, "--set " + address);
+    const toml::table parsed = toml::parse(statement);
     if (const toml::node* node = parsed.get("value"); node != nullptr && parsed.size() == 1) {
       owner.insert_or_assign(target.key->name, *node);
       return;

@@ -18,11 +18,16 @@
 
 #include <string>
 
+#include "scene/scene_keys.h"
+
 namespace vs {
 
 // Parses a scene file into a table without validating it (syntax errors -> InputError
 // with file:line:column).
 toml::table read_scene_table(const std::string& path);
+
+// The declared key `address` resolves to (throws InputError for an unknown address).
+const KeySpec& scene_address_key(const toml::table& table, const std::string& address);
 
 // The numeric value at `address`, or the declared default when the file does not set it.
 double get_scene_number(const toml::table& table, const std::string& address);

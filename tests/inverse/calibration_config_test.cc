@@ -169,6 +169,8 @@ TEST_F(ConfigTest, BadConfigurationsFailBeforeAnyForwardRun) {
   write_file(dir_ / "non_monotone.csv",
              "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,1\n3,2\n2,3\n");
   write_file(dir_ / "no_units.csv", "# source: t\npunch_travel_mm,punch_force_N\n1,1\n");
+  write_file(dir_ / "flat.csv",
+             "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,5\n2,5\n");
   write_file(dir_ / "too_far.csv",
              "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,1\n45,2\n");
   const Case cases[] = {
@@ -180,7 +182,8 @@ TEST_F(ConfigTest, BadConfigurationsFailBeforeAnyForwardRun) {
        "bounds [0, 0.5] exclude the initial value 0.7"},
       {"scene default outside bounds", replace(good, "lower = 100.0", "lower = 600.0"),
        "exclude the initial value 500"},
-      {"negative scale", replace(good, "scale = 0.01", "scale = -1"), "scale must be"},
+      {"negative scale", replace(good, "scale = 0.01", "scale = -1"),
+       "key 'parameter.scale': -1 is out of range (0, inf)"},
       {"duplicate parameter", replace(good, "material.hardening.K_MPa", "tool.punch.friction"),
        "listed twice"},
       {"empty csv", replace(good, "file = \"load.csv\"", "file = \"empty.csv\""), "empty.csv"},
@@ -191,14 +194,17 @@ TEST_F(ConfigTest, BadConfigurationsFailBeforeAnyForwardRun) {
       {"units missing", replace(good, "file = \"load.csv\"", "file = \"no_units.csv\""),
        "# units:"},
       {"missing file", replace(good, "file = \"load.csv\"", "file = \"nope.csv\""), "cannot open"},
-      {"no weight", replace(good, "sigma = 50.0", ""), "needs sigma"},
+      {"no weight on a flat curve",
+       replace(replace(good, "sigma = 50.0", ""), "file = \"load.csv\"", "file = \"flat.csv\""),
+       "its measured values do not vary"},
       {"profile without travel", replace(good, "travel_mm = 20", ""), "needs travel_mm"},
       {"travel beyond the scene", replace(good, "travel_mm = 20", "travel_mm = 40"),
        "punch_travel_mm"},
       {"load beyond the scene", replace(good, "file = \"load.csv\"", "file = \"too_far.csv\""),
        "needs 45 mm of punch travel"},
       {"unknown kind", replace(good, "kind = \"load_travel\"", "kind = \"load\""),
-       "unknown data kind 'load'"},
+       "key 'data.kind': 'load' is not one of load_travel, thickness_strain, "
+       "circumferential_strain"},
       {"unknown method", replace(good, "global_then_local", "simplex"), "simplex"},
       {"global without bounds", replace(good, "upper = 1000.0", ""), "finite lower and upper"},
       {"bad scene override", replace(good, "\"blank.elements\" = 24", "\"blank.elementz\" = 24"),

@@ -92,5 +92,26 @@ TEST(Uncertainty, ParameterOnABoundIsFlagged) {
   EXPECT_TRUE(u.parameters[0].at_bound);
 }
 
+// A parameter identified at 0 (a friction on its bound): its relative error is judged against
+// the scale, and no statement prints a 300-digit percentage.
+TEST(Uncertainty, ValueAtZeroIsJudgedAgainstItsScale) {
+  Eigen::MatrixXd j(3, 1);
+  j << 1, 2, 3;
+  const auto precise =
+      estimate_uncertainty(j, 1e-8, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.1),
+                           unbounded(-1, 1), unbounded(1, 1), {"mu"}, UncertaintyOptions{});
+  EXPECT_TRUE(precise.parameters[0].determined);
+  EXPECT_TRUE(precise.statements.empty());
+  const auto vague =
+      estimate_uncertainty(j, 10.0, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.1),
+                           unbounded(-1, 1), unbounded(1, 1), {"mu"}, UncertaintyOptions{});
+  ASSERT_EQ(vague.statements.size(), 1u);
+  EXPECT_FALSE(vague.parameters[0].determined);
+  EXPECT_NE(vague.statements[0].find("of its scale 0.1 (the value 0 is near zero)"),
+            std::string::npos)
+      << vague.statements[0];
+  EXPECT_LT(vague.statements[0].size(), 150u) << vague.statements[0];
+}
+
 }  // namespace
 }  // namespace vs

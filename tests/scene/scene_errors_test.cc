@@ -48,7 +48,19 @@ TEST(SceneErrors, OutOfRangeValuesNameKeyRangeAndUnit) {
   EXPECT_EQ(scene_error("[blank]\nradius_mm = 59.18\nthickness_mm = -1\n"),
             "scene.toml:3:16: blank.thickness_mm = -1 is out of range (0, inf) mm");
   EXPECT_EQ(scene_error("[blank]\nelements = 0\n"),
-            "scene.toml:2:12: blank.elements = 0 is out of range [4, inf)");
+            "scene.toml:2:12: blank.elements = 0 is out of range [4, 2000]");
+  EXPECT_EQ(scene_error("[blank]\nelements = 1000000000\n"),
+            "scene.toml:2:12: blank.elements = 1000000000 is out of range [4, 2000]: run time and "
+            "per-step history grow with the square of the element count (2000 elements: minutes "
+            "and GBs)");
+  EXPECT_EQ(
+      scene_error("[numerics]\nstep_fraction = 1e-4\n"),
+      "scene.toml:2:17: numerics.step_fraction = 0.0001 is out of range [0.05, 1]: a fraction "
+      "f takes about ln(1/f)/f steps per contact event (92 000 at 1e-4)");
+  EXPECT_EQ(
+      scene_error("[numerics]\nmax_iterations = 100000000\n"),
+      "scene.toml:2:18: numerics.max_iterations = 100000000 is out of range [1, 1000]: a step "
+      "that has not converged in 1000 iterations will not; it is cut back");
   EXPECT_EQ(scene_error("[material]\nr_value = 25\n"),
             "scene.toml:2:11: material.r_value = 25 is out of range [0.05, 20]");
   EXPECT_EQ(scene_error("[numerics]\ntolerance = 0.5\n"),

@@ -1,0 +1,339 @@
+#include "calibration_keys.h"
+
+#include <fmt/format.h>
+
+#include <limits>
+#include <utility>
+
+#include "calibration_config.h"
+
+namespace vs {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+KeySpec key(std::string_view section, std::string_view name, KeyType type, std::string_view unit,
+            Range range, std::string (*default_text)(), std::string_view doc) {
+  KeySpec k;
+  k.section = section;
+  k.name = name;
+  k.type = type;
+  k.unit = unit;
+  k.range = range;
+  k.default_text = default_text;
+  k.doc = doc;
+  return k;
+}
+
+KeySpec required(std::string_view section, std::string_view name, KeyType type,
+                 std::string_view doc) {
+  KeySpec k = key(section, name, type, "", Range{}, nullptr, doc);
+  k.required = true;
+  return k;
+}
+
+KeySpec choice(std::string_view section, std::string_view name,
+               std::vector<std::string_view> choices, std::string (*default_text)(),
+               std::string_view doc) {
+  KeySpec k = key(section, name, KeyType::kEnum, "", Range{}, default_text, doc);
+  k.choices = std::move(choices);
+  return k;
+}
+
+std::string quoted(const std::string& s) { return fmt::format("\"{}\"", s); }
+
+// Defaults are read from default-constructed option structs, so they are declared once (in the
+// structs' headers); captureless lambdas, as KeySpec::default_text is a plain function pointer.
+const OptimizerSettings& optimizer() {
+  static const OptimizerSettings o;
+  return o;
+}
+const UncertaintyOptions& uncertainty() {
+  static const UncertaintyOptions u;
+  return u;
+}
+
+std::vector<KeySpec> build() {
+  const auto kFloat = KeyType::kFloat;
+  const auto kInt = KeyType::kInt;
+  const auto kBool = KeyType::kBool;
+  const auto kString = KeyType::kString;
+  const Range any{-kInf, kInf, true, true};
+  std::vector<KeySpec> k;
+
+  k.push_back(required("", "scene", kString,
+                       "The base scene file, relative to this file (a string); or several "
+                       "scenes as [[scene]] tables, and each [[data]] names its scene."));
+
+  k.push_back(
+      required("scene", "name", kString, "Label the [[data]] tables refer to (scene = \"...\")."));
+  k.back().identifier = true;
+  k.push_back(required("scene", "file", kString, "Scene file, relative to this file."));
+
+  const std::string_view p = "parameter";
+  k.push_back(required(p, "address", kString,
+                       "Dotted scene address of a float key: material.hardening.K_MPa, "
+                       "tool.punch.friction, ... (docs/scene-reference.md, Addresses). Integer "
+                       "keys (blank.elements, ...) cannot be calibrated; set them in "
+                       "[forward.set]."));
+  k.push_back(key(
+      p, "initial", kFloat, "", any, [] { return std::string("(the scene's value)"); },
+      "Start value, finite, in the parameter's own unit; omitted = the scene's value "
+      "(with [forward.set] applied)."));
+  k.push_back(key(
+      p, "lower", kFloat, "", any, [] { return float_toml_text(-kInf); },
+      "Lower bound (global_then_local needs finite bounds)."));
+  k.push_back(key(
+      p, "upper", kFloat, "", any, [] { return float_toml_text(kInf); }, "Upper bound."));
+  k.push_back(key(
+      p, "scale", kFloat, "", open_above(0), [] { return std::string("(|initial|, or 1 if 0)"); },
+      "Typical magnitude in the parameter's unit: the optimiser works on value / "
+      "scale, finite-difference steps are relative_step x scale, and a value below "
+      "1 % of the scale counts as zero in the relative-error check."));
+  k.push_back(key(
+      p, "fixed", kBool, "", Range{}, [] { return std::string("false"); },
+      "Hold the parameter at initial instead of identifying it."));
+
+  const std::string_view d = "data";
+  k.push_back(choice(d, "kind", {"load_travel", "thickness_strain", "circumferential_strain"},
+                     nullptr,
+                     "What the file measures: punch force against punch travel, or a strain "
+                     "profile against the initial radius r0 at one punch travel."));
+  k.back().required = true;
+  k.push_back(required(d, "file", kString,
+                       "Measurement CSV, relative to this file: the format below, or a vshell "
+                       "output file (load_travel.csv, strains_travel_<T>mm.csv) as written."));
+  k.push_back(key(
+      d, "sigma", kFloat, "N or 1", open_above(0), [] { return std::string(""); },
+      "Standard deviation of every point, in the ordinate's internal unit (N for "
+      "forces, 1 for strains); weights are 1 / sigma. Give sigma, weight or a sigma "
+      "column, or leave all out for the relative default (relative_sigma)."));
+  k.push_back(key(
+      d, "weight", kFloat, "1/N or 1", open_above(0), [] { return std::string(""); },
+      "Weight of every point instead of sigma (residual = weight x difference)."));
+  k.push_back(key(
+      d, "relative_sigma", kFloat, "", open_closed(0, 1),
+      [] { return float_toml_text(kDefaultRelativeSigma); },
+      "When the data set gives no sigma, weight or sigma column: sigma = "
+      "relative_sigma x (max - min) of the measured ordinate, so that curves of "
+      "different quantities weigh alike. The report states the sigma used."));
+  k.push_back(key(
+      d, "travel_mm", kFloat, "mm", open_above(0), [] { return std::string(""); },
+      "Profiles only: the punch travel the profile was taken at. Read from the "
+      "'# punch_travel_mm=' line of a vshell strains file when omitted."));
+  k.push_back(key(
+      d, "name", kString, "", Range{}, [] { return std::string("(file name without .csv)"); },
+      "Label in reports and fit_<name>.csv: letters, digits, _ - ."));
+  k.push_back(key(
+      d, "scene", kString, "", Range{}, [] { return std::string(""); },
+      "With several [[scene]]s: the scene this data set is compared with."));
+  k.push_back(key(
+      d, "columns", KeyType::kTable, "", Range{}, [] { return std::string(""); },
+      "Column mapping for files with other headers: { NAME = \"header in the file\", "
+      "... } with NAME one of punch_travel_mm, punch_force_N, punch_force_kN "
+      "(load_travel), r0_mm, eps_thickness, eps_circumferential (profiles), sigma. "
+      "Unmapped columns of the file are then ignored."));
+
+  const std::string_view o = "optimizer";
+  k.push_back(choice(
+      o, "method", {"levenberg_marquardt", "global_then_local"},
+      [] { return quoted("levenberg_marquardt"); },
+      "levenberg_marquardt: Ceres from the initial values; global_then_local: an "
+      "NLopt global search within the bounds, then Levenberg-Marquardt."));
+  k.push_back(key(
+      o, "max_iterations", kInt, "", closed(0, 1000),
+      [] { return std::to_string(optimizer().least_squares.max_iterations); },
+      "Levenberg-Marquardt iterations (each costs 1 + 2 x free parameters forward "
+      "runs with central differences)."));
+  k.back().bound_reason = "each iteration is several forward runs; 1000 is hours of runs";
+  k.push_back(key(
+      o, "function_tolerance", kFloat, "", at_least(0),
+      [] { return float_toml_text(optimizer().least_squares.function_tolerance); },
+      "Ceres: stop when the relative cost decrease is below this."));
+  k.push_back(key(
+      o, "gradient_tolerance", kFloat, "", at_least(0),
+      [] { return float_toml_text(optimizer().least_squares.gradient_tolerance); },
+      "Ceres: stop when the scaled gradient is below this."));
+  k.push_back(key(
+      o, "parameter_tolerance", kFloat, "", at_least(0),
+      [] { return float_toml_text(optimizer().least_squares.parameter_tolerance); },
+      "Ceres: stop when the relative step is below this."));
+  k.push_back(choice(
+      o, "fd", {"central", "ridders"}, [] { return quoted("central"); },
+      "Finite differences: central (2 runs per parameter) or Ridders "
+      "extrapolation (2 x ridders_levels runs per parameter)."));
+  k.push_back(key(
+      o, "relative_step", kFloat, "", Range{0, 1, false, false},
+      [] { return float_toml_text(optimizer().fd.relative_step); },
+      "Finite-difference step = relative_step x scale. The error is ~ forward "
+      "tolerance / step: keep it well above [forward] tolerance."));
+  k.push_back(key(
+      o, "ridders_levels", kInt, "", closed(2, 10),
+      [] { return std::to_string(optimizer().fd.ridders_levels); },
+      "Ridders: steps h, h/2, ..., h/2^(levels-1)."));
+  k.push_back(key(
+      o, "threads", kInt, "", closed(1, 256), [] { return std::to_string(optimizer().threads); },
+      "Forward runs in parallel (finite differences, global search batches)."));
+  k.push_back(choice(
+      o, "global_algorithm", {"mlsl_lds", "crs2", "direct", "bobyqa"},
+      [] { return quoted(optimizer().global.algorithm); },
+      "NLopt algorithm of the global search."));
+  k.back().applies_to = {"method global_then_local"};
+  k.push_back(key(
+      o, "seed", kInt, "", at_least(0), [] { return std::to_string(optimizer().global.seed); },
+      "NLopt seed: the global search is deterministic for a given seed."));
+  k.back().applies_to = {"method global_then_local"};
+  k.push_back(key(
+      o, "max_evaluations", kInt, "", closed(1, 10000),
+      [] { return std::to_string(optimizer().global.max_evaluations); },
+      "Forward evaluations of the global search (its only stopping rule)."));
+  k.back().applies_to = {"method global_then_local"};
+  k.back().bound_reason = "each evaluation is a forward run; 10000 is hours of runs";
+
+  const std::string_view u = "uncertainty";
+  k.push_back(key(
+      u, "confidence", kFloat, "", Range{0, 1, false, false},
+      [] { return float_toml_text(uncertainty().confidence); },
+      "Confidence level of the reported intervals."));
+  k.push_back(key(
+      u, "scale_by_residual_variance", kBool, "", Range{},
+      [] { return std::string(uncertainty().scale_by_residual_variance ? "true" : "false"); },
+      "Scale the covariance by the residual variance (Student-t intervals); false "
+      "trusts the stated sigmas (normal intervals)."));
+  k.push_back(key(
+      u, "rank_tolerance", kFloat, "", Range{0, 1, false, false},
+      [] { return float_toml_text(uncertainty().rank_tolerance); },
+      "Singular values below this x the largest count as zero (undetermined "
+      "directions)."));
+  k.push_back(key(
+      u, "correlation_threshold", kFloat, "", open_closed(0, 1),
+      [] { return float_toml_text(uncertainty().correlation_threshold); },
+      "|correlation| above this: both parameters are reported poorly determined."));
+  k.push_back(key(
+      u, "relative_error_threshold", kFloat, "", open_above(0),
+      [] { return float_toml_text(uncertainty().relative_error_threshold); },
+      "Standard error / |value| (or / scale for values near zero) above this: "
+      "poorly determined."));
+
+  k.push_back(key(
+      "forward", "tolerance", kFloat, "", closed(0, 0.1),
+      [] { return float_toml_text(ForwardSettings{}.tolerance); },
+      "numerics.tolerance of every forward run during the calibration (finite "
+      "differences need tight convergence); 0 keeps the scene's value."));
+  k.push_back(key(
+      "forward", "set", KeyType::kTable, "", Range{}, [] { return std::string(""); },
+      "Scene edits for every forward run, as \"address\" = value (a coarser mesh, "
+      "held parameters): [forward.set] \"blank.elements\" = 24. Checked as the scene "
+      "would check them."));
+
+  k.push_back(key(
+      "output", "directory", kString, "", Range{},
+      [] { return quoted(CalibrationConfig{}.output_directory); },
+      "Report folder, relative to the current folder (vshell calibrate -o "
+      "overrides it)."));
+  k.push_back(key(
+      "output", "plots", kBool, "", Range{},
+      [] { return std::string(CalibrationConfig{}.plots ? "true" : "false"); },
+      "Write the measured-vs-fitted and cost plots (SVG)."));
+  return k;
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& calibration_keys() {
+  static const std::vector<KeySpec> keys = build();
+  return keys;
+}
+
+const std::vector<SectionSpec>& calibration_sections() {
+  static const std::vector<SectionSpec> sections = {
+      {"", "(top level)", "The base scene."},
+      {"scene", "[[scene]]", "Several base scenes (instead of scene = \"...\"), one table each."},
+      {"parameter", "[[parameter]]", "One table per scene number to identify or hold."},
+      {"data", "[[data]]", "One table per measured curve."},
+      {"optimizer", "[optimizer]", "Least-squares method, finite differences, parallel runs."},
+      {"uncertainty", "[uncertainty]", "Covariance, intervals and the plain-language checks."},
+      {"forward", "[forward]", "Settings of every forward run of the calibration."},
+      {"output", "[output]", "The report folder."},
+  };
+  return sections;
+}
+
+const KeySpec* find_calibration_key(std::string_view section, std::string_view name) {
+  for (const KeySpec& k : calibration_keys()) {
+    if (k.section == section && k.name == name) return &k;
+  }
+  return nullptr;
+}
+
+std::string calibration_reference_markdown() {
+  std::string out =
+      "<!-- Generated by calibration_reference_markdown() (inverse/calibration_keys.cc) from the\n"
+      "     key declaration there. Do not edit by hand; regenerate with\n"
+      "     build/tests/vs_inverse_tests --gtest_also_run_disabled_tests "
+      "--gtest_filter='*RegenerateCalibrationReference*' -->\n\n"
+      "# Calibration config reference\n\n"
+      "`vshell calibrate CONFIG [-o DIR] [--quiet]` identifies scene numbers (friction, "
+      "hardening, R, ...) from measured curves. CONFIG is a TOML file; every key below has a "
+      "type, a default (or is required), a unit and an allowed range. Unknown keys, wrong "
+      "types and out-of-range values are errors reported as one line `FILE:LINE: key '...': "
+      "message`, before any forward run. Units as in scenes: mm, N, s, MPa; parameters are in "
+      "the unit of their scene key.\n\n"
+      "Exit codes: 0 the fit converged or stopped at its iteration limit (the report says "
+      "which), 2 bad input, 3 the calibration failed (every forward run failing, or the run at "
+      "the initial parameters failing): the reason is printed on stderr as one line and "
+      "written to `calibration.json` (`termination = \"failed\"`, `failure`).\n\n"
+      "```toml\n"
+      "scene = \"../scenes/ex1_hemispherical_stretching.toml\"\n\n"
+      "[[parameter]]\n"
+      "address = \"tool.punch.friction\"\n"
+      "initial = 0.07\nlower = 0.0\nupper = 0.5\nscale = 0.1\n\n"
+      "[[data]]\n"
+      "kind = \"thickness_strain\"\n"
+      "file = \"thick_20mm.csv\"\n"
+      "travel_mm = 20\n"
+      "sigma = 0.002\n\n"
+      "[forward.set]\n"
+      "\"blank.elements\" = 24\n"
+      "```\n\n"
+      "## Keys\n\n";
+  for (const SectionSpec& section : calibration_sections()) {
+    out += fmt::format("### {}\n\n{}\n\n", section.header, section.doc);
+    out += key_table_markdown(calibration_keys(), section.name) + "\n";
+  }
+  out +=
+      "## Measurement files\n\n"
+      "CSV, one header line of column names, then one point per line; the abscissa strictly "
+      "increasing. Lines starting with `#` before the header are provenance `# key: value`; "
+      "`# source:` and `# units:` are required. The units line names the unit of each column "
+      "(any order; remarks in parentheses are ignored) and must match the columns: `mm` for "
+      "`punch_travel_mm` and `r0_mm`, `N` or `kN` for the force, `1` or `-` for strains. A "
+      "UTF-8 byte order mark is skipped; invisible characters in a header (tabs, no-break "
+      "spaces) are named in the error (`U+0009 TAB`).\n\n"
+      "| kind | columns |\n|---|---|\n"
+      "| `load_travel` | `punch_travel_mm`, `punch_force_N` or `punch_force_kN`, optional "
+      "`sigma` |\n"
+      "| `thickness_strain` | `r0_mm`, `eps_thickness`, optional `sigma` |\n"
+      "| `circumferential_strain` | `r0_mm`, `eps_circumferential`, optional `sigma` |\n\n"
+      "`sigma` is the per-point standard deviation in the unit of the ordinate column as "
+      "written (kN for `punch_force_kN`). Other headers: map them with `columns`.\n\n"
+      "vshell's own outputs are accepted as they are written: `load_travel.csv` (kind "
+      "`load_travel`; the step at travel 0 is kept) and `strains_travel_<T>mm.csv` (kind "
+      "`thickness_strain` or `circumferential_strain`; `travel_mm` from its "
+      "`# punch_travel_mm=` line). They need no provenance lines; their other columns are "
+      "ignored.\n\n"
+      "## Weights\n\n"
+      "Residuals are `weight x (simulated - measured)` with weight = 1 / sigma per point "
+      "(the `sigma` column), per data set (`sigma`), or `weight`. With none of these the "
+      "data set gets sigma = `relative_sigma` x (max - min) of its measured ordinate (1 % by "
+      "default), and the report says so.\n\n"
+      "## Report folder\n\n"
+      "`calibration.json` (identified values, standard errors, intervals, correlations, "
+      "statements, termination; non-finite numbers are left out rather than written as null), "
+      "`evaluations.csv` (every forward evaluation; a failed one has status `failed`, an "
+      "empty cost and the reason), `fit_<name>.csv` and `.svg` (measured against simulated at "
+      "the optimum) and `cost.svg`.\n";
+  return out;
+}
+
+}  // namespace vs
