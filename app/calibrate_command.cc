@@ -11,6 +11,7 @@
 #include "calibrate.h"
 #include "calibration_config.h"
 #include "default_forward_model.h"
+#include "output/run_folder.h"
 
 namespace vs {
 namespace {
@@ -29,15 +30,21 @@ int run_calibrate(const CalibrateArgs& args) {
   // InitGoogleLogging; the reason is in the result and printed below, so glog stays quiet.
   FLAGS_minloglevel = google::GLOG_FATAL;
   const CalibrationConfig config = load_calibration_config(args.config);
+  // The report goes to a staging folder that replaces the output folder when it is complete
+  // (output/run_folder.h); a folder that is not an earlier report is refused before the fit.
+  RunFolder folder(args.output_directory.empty() ? config.output_directory : args.output_directory,
+                   "calibration.json");
   CalibrationOptions options;
-  options.output_directory = args.output_directory;
+  options.output_directory = folder.path();
   if (!args.quiet) {
     options.progress = [](const std::string& line) {
       fmt::print("{}\n", line);
       std::fflush(stdout);
     };
   }
-  const CalibrationResult result = calibrate(config, options, make_default_forward_model());
+  CalibrationResult result = calibrate(config, options, make_default_forward_model());
+  folder.commit();
+  result.output_directory = folder.destination();
   fmt::print("{}", result.brief_report());
   std::fflush(stdout);
   if (result.termination != CalibrationTermination::kFailed) return 0;

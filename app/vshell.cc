@@ -26,6 +26,7 @@
 #include "output/build_info.h"
 #include "output/load_travel_stream.h"
 #include "output/progress.h"
+#include "output/run_folder.h"
 #include "output/run_summary.h"
 #include "output/run_writer.h"
 #include "run/simulate.h"
@@ -83,18 +84,13 @@ void add_scene_args(CLI::App& command, SceneArgs& args) {
       ->allow_extra_args(false);
 }
 
-void create_output_folder(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir)) {
-    throw vs::InputError("cannot create output folder " + dir + ": " + ec.message());
-  }
-}
-
 int run_command(const RunArgs& args) {
   const vs::Scene scene = load_scene_with_overrides(args.scene);
-  const std::string dir = args.output_dir.empty() ? scene.output.directory : args.output_dir;
-  create_output_folder(dir);
+  // The run writes into a staging folder that replaces the output folder only when it is
+  // complete (output/run_folder.h): the folder always describes exactly one run.
+  vs::RunFolder folder(args.output_dir.empty() ? scene.output.directory : args.output_dir,
+                       "run.json");
+  const std::string& dir = folder.path();
   // Streamed so that a crash keeps every converged step; rewritten identically at the end.
   vs::LoadTravelStream stream((fs::path(dir) / "load_travel.csv").string());
   vs::ProgressPrinter::Options progress_options;
@@ -112,6 +108,8 @@ int run_command(const RunArgs& args) {
   const vs::RunResult result = vs::simulate(scene, options);
   progress.finish();
   vs::write_run_folder(scene, result, dir);
+  stream.close();
+  folder.commit();
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -125,7 +123,7 @@ int run_command(const RunArgs& args) {
                    "of {:.2f} s\n",
                    t.assembly_s, t.linear_solve_s, t.contact_s, t.total_s)
             << fmt::format("wall time         {:.2f} s\n", wall_s)
-            << fmt::format("output folder     {}\n", dir);
+            << fmt::format("output folder     {}\n", folder.destination());
   return result.completed() ? kExitOk : kExitRunFailed;
 }
 

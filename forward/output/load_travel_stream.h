@@ -19,6 +19,9 @@ class LoadTravelStream {
   // (disk full): losing rows silently would defeat the purpose of streaming.
   void append(const StepRecord& record);
 
+  // Closes the file (before its folder is moved, RunFolder::commit).
+  void close() { file_.close(); }
+
   int rows_written() const { return rows_; }
   const std::string& path() const { return path_; }
 
