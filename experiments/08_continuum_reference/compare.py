@@ -57,7 +57,15 @@ def strain_file(d, T):
             return p
     hits = [p for p in glob.glob(os.path.join(d, "strains_travel_*mm.csv"))
             if abs(float(os.path.basename(p)[15:-6]) - T) < 1e-6]
-    return hits[0] if hits else None
+    if hits:
+        return hits[0]
+    final = os.path.join(d, "strains_travel_final.csv")  # a continuum run that stopped early
+    if os.path.exists(final):
+        with open(final) as f:
+            first = f.readline()
+        if first.startswith("# punch_travel_mm=") and abs(float(first[18:].split()[0]) - T) < 1e-3:
+            return final
+    return None
 
 
 def profile(path):

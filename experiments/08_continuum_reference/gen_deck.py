@@ -120,9 +120,11 @@ def tool_profile(scene, tool, t):
         face = 0.5 * h0
         prims = [(seg((Ro, face + rho + 15.0), (Ro, face + rho), (-1.0, 0.0)), False),
                  (arc((Ro + rho, face + rho), rho, pi, 1.5 * pi), False)]
-        if scene["holder_gap"] is not None:  # the cup flange slides on the die face
-            prims.append((seg((Ro + rho, face), (scene["blank_radius"] + 4.0, face),
-                              (0.0, -1.0)), False))
+        # the flat die face beyond the shoulder (as in rigid_tool.cc): the cup flange slides on
+        # it; in ex1 the rim section rotates about its pinned mean and its upper corner moves
+        # past the end of the shoulder arc (r = clamp radius), so the face must be there too
+        prims.append((seg((Ro + rho, face), (scene["blank_radius"] + 4.0, face),
+                          (0.0, -1.0)), False))
         return prims
     if tool == "holder":
         Ro, rho = scene["die"]["radius"], scene["die"]["profile"]
@@ -356,7 +358,7 @@ def main():
                    help="die (and holder) friction; default: the scene's value")
     p.add_argument("--radial", type=int, default=120, help="sheet elements along the radius")
     p.add_argument("--layers", type=int, default=4, help="sheet elements through the thickness")
-    p.add_argument("--axis-element-mm", type=float, default=0.2,
+    p.add_argument("--axis-element-mm", type=float, default=0.0,
                    help="length of the sheet element on the axis (0: uniform mesh)")
     p.add_argument("--element", default="CAX8R", choices=["CAX8R", "CAX8"])
     p.add_argument("--thickness", type=float, default=None, help="override the sheet thickness [mm]")

@@ -5,6 +5,8 @@
   <out>/strains_travel_<T>mm.csv     r0_mm, r_mm, z_mm, thickness_mm, eps_meridional,
                                      eps_circumferential, eps_thickness at the output travels
                                      (the last increment of each step)
+  <out>/strains_travel_final.csv     the same at the last converged increment, if the run stopped
+                                     before its final travel (travel in a comment line)
 
 Punch travel: the deck ramps the punch displacement linearly within each step; step k ends at
 total time k, so travel = T_{k-1} + (time - (k - 1)) (T_k - T_{k-1}). The step travels and the
@@ -110,6 +112,9 @@ def main():
     incs = [(travel_of(time, travels), {int(r[0]): (r[1], r[2]) for r in rows})
             for kind, _, time, rows in blocks if kind == "displacements"]
     incs = [(0.0, None)] + incs
+    last = incs[-1][0] if len(incs) > 1 else 0.0
+    if last < outputs[-1] - 1e-6 and last > 0.0:  # the run stopped early: also its last state
+        outputs = outputs + [last]
     for T in outputs:
         hit = [k for k in range(1, len(incs)) if incs[k - 1][0] <= T + 1e-9 <= incs[k][0] + 2e-9]
         if not hit:
@@ -126,8 +131,12 @@ def main():
         for b, t in cols:
             pb, pt = pos(b), pos(t)
             mids.append(((pb[0] + pt[0]) / 2, (pb[1] + pt[1]) / 2, pb, pt))
-        with open(os.path.join(a.out, f"strains_travel_{T:g}mm.csv"), "w", newline="") as f:
+        early = T == last and T not in outputs[:-1] and last < travels[-1][1] - 1e-6
+        fname = "strains_travel_final.csv" if early else f"strains_travel_{T:g}mm.csv"
+        with open(os.path.join(a.out, fname), "w", newline="") as f:
             w = csv.writer(f)
+            if early:
+                f.write(f"# punch_travel_mm={T:.4f} (the run stopped here)\n")
             w.writerow(["r0_mm", "r_mm", "z_mm", "thickness_mm", "eps_meridional",
                         "eps_circumferential", "eps_thickness"])
             for q, (mx, mz, pb, pt) in enumerate(mids):
