@@ -28,26 +28,24 @@ rm -f "$res/comparison.csv" "$res/convergence.csv"
 cmp() {  # label ref other csv [options]
   local label=$1 ref=$2 other=$3 csv=$4; shift 4
   [ -f "$ref/load_travel.csv" ] || { echo "skip $label (no $ref)"; return 0; }
+  [ -f "$other/load_travel.csv" ] || { echo "skip $label (no $other)"; return 0; }
   echo "== $label"
   python3 "$here/compare.py" "$ref" "$other" --label "$label" --csv "$csv" \
     --r0-min 1.0 --r0-max 52.83 "$@"
 }
 C=$res/comparison.csv
-# the continuum runs stopped at 28.2062 (friction 0) and 29.2062 mm (0.1): ccx diverged (README);
+# the continuum runs stopped at 28.2062 (friction 0, 0.3) and 29.2062 mm (0.1): ccx diverged
+# (README);
 # their last state is compared too (the shell writes outputs there, see $outs)
 cmp shell_vs_ex1_mu000 "$res/ex1_mu000_r60_l4" "$scratch/ex1_mu000" "$C" \
     --travels 5,10,15,20,25,28.2062 --strain-travels 10,20,25,28.2062
 cmp shell_vs_ex1_mu010 "$res/ex1_mu010_r60_l4" "$scratch/ex1_mu010" "$C" \
     --travels 5,10,15,20,25,29.2062 --strain-travels 10,20,25,29.2062
-cmp shell_vs_ex1_mu030 "$res/ex1_mu030_r60_l4" "$scratch/ex1_mu030" "$C"
-cmp shell_vs_ex1_mu010_E100x "$res/ex1_mu010_r60_l4_E100x" "$scratch/ex1_mu010" "$C"
-cmp shell_vs_ex1_mu000_E100x "$res/ex1_mu000_r60_l4_E100x" "$scratch/ex1_mu000" "$C"
-cmp shell_vs_ex1_mu010_t0425_E100x "$res/ex1_mu010_r120_l2_t0425_E100x" \
-    "$scratch/ex1_mu010_t0425" "$C"
+cmp shell_vs_ex1_mu030 "$res/ex1_mu030_r60_l4" "$scratch/ex1_mu030" "$C" \
+    --travels 5,10,15,20,25,28.2062 --strain-travels 10,20,25,28.2062
+cmp shell_vs_ex1_mu010_t0425 "$res/ex1_mu010_r60_l2_t0425" "$scratch/ex1_mu010_t0425" "$C"
 cmp shell_vs_ex3_mu007 "$res/ex3_mu007_r54_l4" "$scratch/ex3_r1" "$C" \
     --travels 5,10,15,20,25,30,35,40 --strain-travels 10,20,30
-# elasticity: the same continuum with E x 100 against E (E as the reference)
-cmp E100x_vs_E_ex1_mu010 "$res/ex1_mu010_r60_l4" "$res/ex1_mu010_r60_l4_E100x" "$C"
 V=$res/convergence.csv
 cmp r40_l4_vs_r60_l4 "$res/ex1_mu010_r60_l4" "$res/ex1_mu010_r40_l4" "$V"
 cmp r60_l2_vs_r60_l4 "$res/ex1_mu010_r60_l4" "$res/ex1_mu010_r60_l2" "$V"
