@@ -272,7 +272,8 @@ def write_deck(a, out):
     # travel 0 on (ex1: the apex touches it; ex3: the flat face does), and CalculiX's contact is
     # defective on faces with a node on the axis (README). It is given the punch displacement,
     # i.e. put into the punch node set, whose reactions make the punch force.
-    pole = [grid[0, 0]] if a.pin_pole else []
+    pin = a.pin_pole if a.pin_pole is not None else int(sc["punch"]["kind"] == "hemispherical")
+    pole = [grid[0, 0]] if pin else []
     w("*NSET, NSET=PUNCH\n" + fmt_set(punch_nodes + pole) + "\n")
     w("*NSET, NSET=FIXEDTOOLS\n" + fmt_set(die_nodes + holder_nodes) + "\n")
     w("*NSET, NSET=AXIS\n" + fmt_set(grid[0, j] for j in range(2 * nl + 1)) + "\n")
@@ -367,8 +368,10 @@ def main():
     p.add_argument("--tool-element-mm", type=float, default=0.5, help="tool surface element length")
     p.add_argument("--axis-face-mm", type=float, default=0.01,
                    help="length of the first punch face, the one touching the axis")
-    p.add_argument("--pin-pole", type=int, default=1,
-                   help="1: the sheet's lower pole node moves with the punch (see the deck)")
+    p.add_argument("--pin-pole", type=int, default=None,
+                   help="1: the sheet's lower pole node moves with the punch (see the deck); "
+                        "default 1 for ex1 (hemispherical punch), 0 for ex3 (the cup bottom "
+                        "lifts off the flat punch by 0.1-0.2 mm)")
     p.add_argument("--penalty", type=float, default=2.0e5, help="contact penalty [MPa/mm]")
     p.add_argument("--stick-slope", type=float, default=2.0e4, help="friction stick slope [MPa/mm]")
     p.add_argument("--first-increment-mm", type=float, default=0.05)
