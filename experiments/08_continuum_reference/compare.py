@@ -33,6 +33,8 @@ def interp(xs, ys, x):
         if x <= xs[k]:
             t = (x - xs[k - 1]) / (xs[k] - xs[k - 1]) if xs[k] > xs[k - 1] else 1.0
             return ys[k - 1] + t * (ys[k] - ys[k - 1])
+    if x <= xs[-1] + 1e-3:  # the last point of a run that stopped, written rounded
+        return ys[-1]
     return float("nan")
 
 
