@@ -84,6 +84,13 @@ void add_scene_args(CLI::App& command, SceneArgs& args) {
       ->allow_extra_args(false);
 }
 
+// The first line of RunResult::built without its "model: " label.
+std::string model_line(const vs::RunResult& result) {
+  if (result.built.empty()) return "-";
+  const std::string& line = result.built.front();
+  return line.rfind("model: ", 0) == 0 ? line.substr(7) : line;
+}
+
 int run_command(const RunArgs& args) {
   const vs::Scene scene = load_scene_with_overrides(args.scene);
   // The run writes into a staging folder that replaces the output folder only when it is
@@ -116,8 +123,7 @@ int run_command(const RunArgs& args) {
   for (const std::string& w : result.warnings) std::cerr << "warning: " << w << '\n';
   const vs::RunTimings& t = result.timings;
   std::cout << vs::summary_report(vs::summarize_run(result)) << '\n'
-            << fmt::format("model             {}\n",
-                           result.built.empty() ? std::string("-") : result.built.front())
+            << fmt::format("model             {}\n", model_line(result))
             << fmt::format(
                    "time split        assembly {:.2f} s, linear solves {:.2f} s, contact {:.2f} s "
                    "of {:.2f} s\n",

@@ -55,8 +55,18 @@ std::string ProgressPrinter::format_line(const StepRecord& r, double elapsed_s) 
   } else {
     travel = fmt::format("{:.2f} mm", r.punch_travel_mm);
   }
-  return fmt::format("step {}  travel {}  force {} kN  iters {}  elapsed {:.1f} s", r.step, travel,
-                     kilonewtons(r.punch_force_N), r.iterations, elapsed_s);
+  std::string line =
+      fmt::format("step {}  travel {}  force {} kN  iters {}  elapsed {:.1f} s", r.step, travel,
+                  kilonewtons(r.punch_force_N), r.iterations, elapsed_s);
+  // Time left, extrapolated linearly in punch travel (steps get no cheaper later in a run, so it
+  // is an estimate, not a bound).
+  if (options_.total_travel_mm > 0.0 && r.punch_travel_mm > 0.0 &&
+      r.punch_travel_mm < options_.total_travel_mm) {
+    const double eta_s =
+        elapsed_s * (options_.total_travel_mm - r.punch_travel_mm) / r.punch_travel_mm;
+    line += fmt::format("  ETA {:.1f} s", eta_s);
+  }
+  return line;
 }
 
 void ProgressPrinter::print(const StepRecord& record, double now) {

@@ -23,7 +23,8 @@ TEST(Progress, LineShowsStepTravelForceIterationsAndTime) {
   StepRecord r = test::step_record(120, 18.4, 41234.0, 0.9);
   r.iterations = 4;
   EXPECT_EQ(p.format_line(r, 0.94),
-            "step 120  travel 18.40/30.00 mm (61%)  force 41.2 kN  iters 4  elapsed 0.9 s");
+            "step 120  travel 18.40/30.00 mm (61%)  force 41.2 kN  iters 4  elapsed 0.9 s  ETA "
+            "0.6 s");  // 0.94 s x (30 - 18.4) / 18.4 left
   ProgressPrinter no_total({0.0, 1.0, false}, out, t.clock());
   EXPECT_EQ(no_total.format_line(r, 2.0),
             "step 120  travel 18.40 mm  force 41.2 kN  iters 4  elapsed 2.0 s");
