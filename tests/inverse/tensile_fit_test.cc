@@ -127,30 +127,49 @@ TEST(TensileFit, NistCurveReversesAndIsFittedOnItsFirstBranch) {
   EXPECT_THROW(vs::select_fit_range(curve, options), vs::InputError);
 }
 
+// The fit against the measured NIST curve, checked by independent means (not by recomputing what
+// the fit computes): the fitted parameters minimise the sum of squared residuals (every one of
+// them, moved by +-1e-3 of its value, raises it: the optimiser stopped at the minimum, not short
+// of it), the residual is small against the flow stress (< 2 % of ~300 MPa), and the 95 %
+// intervals are those of a determined fit (a positive width, narrower than 10 % of the value).
 TEST(TensileFit, NistCurveIsReproducedWithinTheStatedResidual) {
   const vs::TensileCurve curve = vs::read_tensile_csv(kNist);
   ASSERT_EQ(curve.time_s.size(), 2087u);
   const vs::FitRange range = vs::select_fit_range(curve, {});
   EXPECT_NEAR(range.max_load_eng_stress_MPa, 316.7, 0.1);
   EXPECT_NEAR(range.max_load_true_strain, 0.181, 0.001);
-  for (FitLaw law : {FitLaw::kSwift, FitLaw::kVoce, FitLaw::kHollomon}) {
-    const vs::LawFit fit =
-        vs::fit_hardening_law(law, range.plastic_strain, range.true_stress_MPa, 70000.0);
-    const vs::Hardening h(fit.spec);
+  auto sse_of = [&](const vs::HardeningSpec& spec) {
+    const vs::Hardening h(spec);
     double sse = 0.0;
-    int within_2rms = 0;
     for (std::size_t i = 0; i < range.rows.size(); ++i) {
       const double r = h.flow_stress(range.plastic_strain[i]) - range.true_stress_MPa[i];
       sse += r * r;
-      within_2rms += std::abs(r) <= 2.0 * fit.rms_MPa;
+    }
+    return sse;
+  };
+  for (FitLaw law : {FitLaw::kSwift, FitLaw::kVoce, FitLaw::kHollomon}) {
+    const vs::LawFit fit =
+        vs::fit_hardening_law(law, range.plastic_strain, range.true_stress_MPa, 70000.0);
+    const double sse = sse_of(fit.spec);
+    std::vector<double*> free;
+    vs::HardeningSpec probe = fit.spec;
+    if (law == FitLaw::kSwift) free = {&probe.K_MPa, &probe.eps0, &probe.n};
+    if (law == FitLaw::kVoce) free = {&probe.sigma0_MPa, &probe.Q_MPa, &probe.b};
+    if (law == FitLaw::kHollomon) free = {&probe.K_MPa, &probe.n};
+    for (double* p : free) {
+      for (double f : {1.0 - 1e-3, 1.0 + 1e-3}) {
+        const double keep = *p;
+        *p = keep * f;
+        EXPECT_GT(sse_of(probe), sse) << vs::fit_law_name(law) << ": a parameter x" << f;
+        *p = keep;
+      }
     }
     const double n = static_cast<double>(range.rows.size());
-    EXPECT_NEAR(std::sqrt(sse / n), fit.rms_MPa, 1e-6 * fit.rms_MPa) << vs::fit_law_name(law);
-    EXPECT_GT(within_2rms / n, 0.9) << vs::fit_law_name(law);
-    EXPECT_LT(fit.rms_MPa, 6.0) << vs::fit_law_name(law);  // < 2 % of the ~300 MPa flow stress
+    EXPECT_LT(std::sqrt(sse / n), 6.0) << vs::fit_law_name(law);  // < 2 % of ~300 MPa
     for (const vs::ParameterUncertainty& p : fit.uncertainty.parameters) {
-      EXPECT_LE(p.interval_lower, p.value);
-      EXPECT_GE(p.interval_upper, p.value);
+      const double width = p.interval_upper - p.interval_lower;
+      EXPECT_GT(width, 0.0) << p.name;
+      EXPECT_LT(width, 0.1 * std::abs(p.value)) << p.name;
     }
   }
 }
