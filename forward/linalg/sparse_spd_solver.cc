@@ -14,8 +14,7 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
   ++analyses_;
   ldlt_analyzed_ = false;
   if (requested_ == SparseSolverKind::kAuto) {
-    preferred_ = A.rows() < kAutoCholmodDofs ? SparseSolverKind::kSimplicialLDLT
-                                             : SparseSolverKind::kCholmodSupernodal;
+    preferred_ = auto_sparse_solver(static_cast<int>(A.rows()));
   }
   if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
     cholmod_ = std::make_unique<Cholmod>();

@@ -21,6 +21,12 @@ enum class SparseSolverKind { kCholmodSupernodal, kSimplicialLDLT, kAuto };
 
 inline constexpr int kAutoCholmodDofs = 8000;
 
+// What kAuto resolves to for a matrix of `dofs` unknowns.
+inline SparseSolverKind auto_sparse_solver(int dofs) {
+  return dofs < kAutoCholmodDofs ? SparseSolverKind::kSimplicialLDLT
+                                 : SparseSolverKind::kCholmodSupernodal;
+}
+
 class SparseSpdSolver {
  public:
   explicit SparseSpdSolver(SparseSolverKind preferred = SparseSolverKind::kAuto);

@@ -15,11 +15,6 @@ namespace {
 
 using namespace vs::testing;
 
-constexpr const char* kLoadCsv =
-    "# source: test\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,100\n2,200\n3,300\n";
-constexpr const char* kThickCsv =
-    "# source: test\n# units: mm, 1\nr0_mm,eps_thickness\n0,-0.1\n10,-0.2\n20,-0.1\n";
-
 constexpr const char* kGoodConfig = R"(scene = "scene.toml"
 [[parameter]]
 address = "tool.punch.friction"

@@ -67,6 +67,12 @@ punch_travel_mm = 30.0
 output_travels_mm = [30.0]
 )";
 
+// A small load curve and thickness profile in the measurement CSV format (config tests).
+inline constexpr const char* kLoadCsv =
+    "# source: test\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,100\n2,200\n3,300\n";
+inline constexpr const char* kThickCsv =
+    "# source: test\n# units: mm, 1\nr0_mm,eps_thickness\n0,-0.1\n10,-0.2\n20,-0.1\n";
+
 inline fs::path write_scene(const fs::path& dir) {
   const fs::path path = dir / "scene.toml";
   write_file(path, kSceneToml);
