@@ -7,12 +7,13 @@
 //   shell3d_benchmark [--divisions 4,8,16] [--rules mitc9,paper_selective] [--friction F]
 //                     [--travel MM] [--outputs A,B,C] [--increment MM] [--axisym-elements N]
 //                     [--scene FILE] [--csv FILE] [--speed-setting] [--per-length X]
-//                     [--cutoff X] [--goal]
+//                     [--cutoff X] [--implicit] [--goal]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
-// two keys one by one (after --speed-setting, whatever the order). --goal: after each run, the
-// issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric solver at
-// every output travel, in under 10 s wall) with the figures it rests on.
+// two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
+// numerics.time_integration = implicit (the reference stays at its defaults). --goal: after each
+// run, the issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric
+// solver at every output travel, in under 10 s wall) with the figures it rests on.
 //
 // Report study (experiments/REPORT.md, run by experiments/run_all.sh): with --out DIR and/or
 // --quick it runs the work-precision study of experiments/common/shell3d_study.h instead and
@@ -37,13 +38,13 @@
 #include <string>
 #include <vector>
 
+#include "common/axisym_comparison.h"
 #include "common/harness.h"
 #include "common/shell3d_study.h"
 #include "common/table.h"
 #include "output/svg_plot.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "common/axisym_comparison.h"
 #include "stepping/shell3d_driver.h"
 
 namespace {
@@ -76,6 +77,7 @@ struct Args {
   bool quick = false;
   bool speed_setting = false;
   double per_length = 0.0, cutoff = 0.0;  // 0: the scene's (or the speed setting's)
+  bool implicit = false;                  // --implicit: numerics.time_integration = implicit
   bool goal = false;
   std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
@@ -85,8 +87,9 @@ Args parse(int argc, char** argv) {
   Args a;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--quick" || key == "--speed-setting" || key == "--goal") {
+    if (key == "--quick" || key == "--speed-setting" || key == "--goal" || key == "--implicit") {
       if (key == "--quick") a.study = a.quick = true;
+      if (key == "--implicit") a.implicit = true;
       if (key == "--speed-setting") a.speed_setting = true;
       if (key == "--goal") a.goal = true;
       --i;  // no value
@@ -272,6 +275,7 @@ int main(int argc, char** argv) {
   }
   if (args.per_length > 0.0) base.numerics.max_travel_increment_per_length = args.per_length;
   if (args.cutoff > 0.0) base.numerics.strain_rate_cutoff = args.cutoff;
+  if (args.implicit) base.numerics.time_integration = vs::TimeIntegration::kImplicit;
   if (!args.friction.empty()) {
     for (auto& t : base.tools) {
       t.friction = args.friction == "sticking" ? std::numeric_limits<double>::infinity()
@@ -327,8 +331,8 @@ int main(int argc, char** argv) {
                             100.0 * c.mean_force_deviation, c.max_eps_thickness_deviation());
         if (csv) {
           csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                             n, rule, friction_text, r.shell->mesh.num_elements(), r.dofs, r.completed(),
-                             wall, r.timings.assembly_s, r.timings.linear_solve_s,
+                             n, rule, friction_text, r.shell->mesh.num_elements(), r.dofs,
+                             r.completed(), wall, r.timings.assembly_s, r.timings.linear_solve_s,
                              r.timings.contact_s, r.timings.factorisations, r.steps.size(),
                              r.total_iterations, rss, c.punch_travel_mm, c.force_3d_N,
                              c.force_axisym_N, c.force_deviation, c.mean_force_deviation,

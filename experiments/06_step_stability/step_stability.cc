@@ -35,8 +35,9 @@ int main(int argc, char** argv) {
   const std::string& out_dir = args.out_dir;
   std::filesystem::create_directories(out_dir);
   const std::vector<int> meshes = quick ? std::vector<int>{24} : std::vector<int>{24, 48};
-  const std::vector<double> factors =
-      quick ? std::vector<double>{0.1, 0.025} : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
+  const std::vector<double> factors = !args.steps.empty() ? args.steps
+                                      : quick             ? std::vector<double>{0.1, 0.025}
+                                              : std::vector<double>{0.1, 0.05, 0.025, 0.0125};
   const int sweep = quick ? 5 : 11;
   // The default strain-rate cut-off, and the 100x larger one of the performance benchmark's speed
   // setting (rigid zones creep at 1 % of the nominal rate; at the larger steps only).
@@ -64,16 +65,17 @@ int main(int argc, char** argv) {
         double rough = 0.0, cpu = 0.0, step_mm = 0.0;
         for (int k = 0; k < sweep; ++k) {
           const double m = 0.099 + 0.002 * k / (sweep - 1);
+          vsx::Overrides sets = {{"blank.elements", std::to_string(el)},
+                                 {"process.punch_travel_mm", "20"},
+                                 {"process.output_travels_mm", "[10.0, 20.0]"},
+                                 {"material.r_value", "1.5"},
+                                 {"numerics.tolerance", "1e-8"},
+                                 {"numerics.max_travel_increment_per_length", fmt::format("{}", f)},
+                                 {"numerics.strain_rate_cutoff", cut.value},
+                                 {"tool.punch.friction", fmt::format("{:.6f}", m)}};
+          for (const auto& [key, value] : args.sets) sets.push_back({key, value});
           const vs::Scene scene =
-              vsx::make_scene(vsx::scene_path(src, "ex1_hemispherical_stretching"),
-                              {{"blank.elements", std::to_string(el)},
-                               {"process.punch_travel_mm", "20"},
-                               {"process.output_travels_mm", "[10.0, 20.0]"},
-                               {"material.r_value", "1.5"},
-                               {"numerics.tolerance", "1e-8"},
-                               {"numerics.max_travel_increment_per_length", fmt::format("{}", f)},
-                               {"numerics.strain_rate_cutoff", cut.value},
-                               {"tool.punch.friction", fmt::format("{:.6f}", m)}});
+              vsx::make_scene(vsx::scene_path(src, "ex1_hemispherical_stretching"), sets);
           step_mm =
               std::min(scene.numerics.max_travel_increment_mm, f * scene.blank.radius_mm / el);
           const vsx::TimedRun run = vsx::run_once(scene, 600.0);

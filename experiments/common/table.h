@@ -121,6 +121,10 @@ inline std::string load_average() {
 struct StudyArgs {
   bool quick = false;
   std::string out_dir;
+  // --set KEY=VALUE (repeatable): scene overrides added to every run of studies that take them.
+  std::vector<std::pair<std::string, std::string>> sets;
+  // --steps A,B,...: the travel steps a study sweeps, where it sweeps them (empty: its own).
+  std::vector<double> steps;
 };
 
 inline StudyArgs parse_args(int argc, char** argv, const std::string& default_out) {
@@ -132,8 +136,17 @@ inline StudyArgs parse_args(int argc, char** argv, const std::string& default_ou
       a.quick = true;
     } else if (s == "--out" && i + 1 < argc) {
       a.out_dir = argv[++i];
+    } else if (s == "--steps" && i + 1 < argc) {
+      std::stringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');) a.steps.push_back(std::stod(item));
+    } else if (s == "--set" && i + 1 < argc &&
+               std::string(argv[i + 1]).find('=') != std::string::npos) {
+      const std::string kv = argv[++i];
+      const std::size_t eq = kv.find('=');
+      a.sets.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
     } else {
-      std::cerr << "usage: " << argv[0] << " [--quick] [--out DIR]\n";
+      std::cerr << "usage: " << argv[0]
+                << " [--quick] [--out DIR] [--steps A,B,..] [--set KEY=VALUE ...]\n";
       std::exit(2);
     }
   }

@@ -13,6 +13,27 @@ double Axisym2Geometry::length() const {
   return std::sqrt(dr * dr + dz * dz);
 }
 
+Mat6 axisym2_stress_stiffness(const Axisym2Geometry& g, double N_s, double N_t) {
+  Mat6 k = Mat6::Zero();
+  const double L = g.length();
+  const double r = g.mid_radius();
+  const double ks = N_s > 0.0 ? 2.0 * std::numbers::pi * r * N_s / L : 0.0;
+  for (int c = 0; c < 2; ++c) {  // u and w: the meridian gradient (v_b - v_a) / L
+    k(c, c) += ks;
+    k(3 + c, 3 + c) += ks;
+    k(c, 3 + c) -= ks;
+    k(3 + c, c) -= ks;
+  }
+  if (N_t > 0.0 && r > 0.0) {  // the midpoint radial velocity (u_a + u_b) / 2 over r
+    const double kt = 0.25 * 2.0 * std::numbers::pi * L * N_t / r;
+    k(0, 0) += kt;
+    k(3, 3) += kt;
+    k(0, 3) += kt;
+    k(3, 0) += kt;
+  }
+  return k;
+}
+
 Mat56 axisym2_B(const Axisym2Geometry& g) {
   const double l = g.length();
   const double c = (g.rb - g.ra) / l;

@@ -79,4 +79,14 @@ void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
                       StiffnessKind kind, Axisym2Output* out, double tangent_weight = 1.0,
                       bool split = true);
 
+// Initial-stress (geometric) stiffness of the membrane forces for an implicit geometry update:
+// moving the nodes by Delta changes the internal forces at fixed stress resultants by about
+// K Delta, with the updated-Lagrangian form
+//   K = 2 pi int_L [N_s (dDelta/ds).(ddelta/ds) + N_t (Delta_r / r)(delta_r / r)] r ds,
+// one-point rule: 2 pi r_m N_s / L on [[I, -I], [-I, I]] for (u, w) and 2 pi L N_t / r_m on the
+// midpoint radial velocity. Compressive resultants are dropped (the matrix stays positive
+// semi-definite: a compressed membrane's negative stiffness is the wrinkling instability, which
+// the velocity solve does not resolve). Rotation rates get nothing. N_s, N_t in N/mm; K in N/mm.
+Mat6 axisym2_stress_stiffness(const Axisym2Geometry& g, double N_s, double N_t);
+
 }  // namespace vs

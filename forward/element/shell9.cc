@@ -1,5 +1,6 @@
 #include "element/shell9.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cassert>
@@ -51,6 +52,44 @@ const Gauss& gauss(int n) {
 }
 
 }  // namespace
+
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Vec3>& membrane) {
+  Eigen::Matrix<double, 9, 9> k = Eigen::Matrix<double, 9, 9>::Zero();
+  const Gauss& q = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
+  assert(static_cast<int>(membrane.size()) == q.n * q.n);
+  int ip = 0;
+  for (int j = 0; j < q.n; ++j) {
+    for (int i = 0; i < q.n; ++i, ++ip) {
+      const Vec3& m = membrane[static_cast<std::size_t>(ip)];
+      Eigen::Matrix2d N;
+      N << m(0), m(2), m(2), m(1);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(N);
+      const Eigen::Vector2d lam = eig.eigenvalues().cwiseMax(0.0);
+      if (lam.maxCoeff() <= 0.0) continue;
+      const Eigen::Matrix2d Np =
+          eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose();
+      const Shape9 sh = lagrange9(q.x[i], q.x[j]);
+      Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
+      for (int a = 0; a < 9; ++a) {
+        gr += sh.dr(a) * g.x[a];
+        gs += sh.ds(a) * g.x[a];
+      }
+      const Vec3 n = gr.cross(gs);
+      const double area = n.norm();
+      const Vec3 e1 = gr.normalized();
+      const Vec3 e2 = (n / area).cross(e1);
+      Eigen::Matrix2d J;  // d(x1, x2)/d(r, s)
+      J << gr.dot(e1), gs.dot(e1), gr.dot(e2), gs.dot(e2);
+      Eigen::Matrix<double, 2, 9> G;  // rows: d/dr, d/ds
+      G.row(0) = sh.dr.transpose();
+      G.row(1) = sh.ds.transpose();
+      G = J.transpose().inverse() * G;  // rows: d/dx1, d/dx2
+      k += (area * q.w[i] * q.w[j]) * G.transpose() * Np * G;
+    }
+  }
+  return k;
+}
 
 double shell9_area(const Shell9Geometry& g) {
   const Gauss& q = gauss(3);

@@ -20,9 +20,9 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "element/shell9_kinematics.h"
 #include "element/simpson.h"
 #include "material/hill_plane_stress.h"
-#include "element/shell9_kinematics.h"
 
 namespace vs::shell3d {
 
@@ -142,5 +142,15 @@ void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRu
 
 // Mid-surface area of the element (3x3 Gauss).
 double shell9_area(const Shell9Geometry& g);
+
+// Membrane initial-stress (geometric) stiffness for an implicit geometry update, per pair of
+// nodes (the same for each of the 3 velocity components, global frame):
+//   k(a, b) = sum_p dA_p (grad N_a)^T N+_p (grad N_b),
+// over the in-plane points p of `rule` on the mid-surface (the order of Shell9Output::resultant),
+// grad in the local frame e1 = g_r / |g_r|, e2 = e3 x e1 of the point, N+_p the tensile part of
+// the membrane force tensor [[N11, N12], [N12, N22]] of `membrane` (N/mm, one Vec3 per point).
+// Dropping the compressive part keeps k positive semi-definite (see axisym2_stress_stiffness).
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Vec3>& membrane);
 
 }  // namespace vs::shell3d

@@ -410,6 +410,26 @@ void AxisymModel::evaluate_elements(const AxisymState& s, const Eigen::VectorXd&
   }
   if (fixed_gap_holder()) add_gap_holder(s, v, want_k, out);
   add_squeeze(s, v, want_k, out);
+  if (coupling_) add_geometry_coupling(s, v, want_k, out);
+}
+
+void AxisymModel::add_geometry_coupling(const AxisymState& s, const Eigen::VectorXd& v, bool want_k,
+                                        AxisymSystem* out) const {
+  const GeometryCoupling& c = *coupling_;
+  assert(static_cast<int>(c.resultants.size()) == num_elements());
+  for (int e = 0; e < num_elements(); ++e) {
+    const Mat6 k = c.scale_s *
+                   axisym2_stress_stiffness(geometry(s, e), c.resultants[e](0), c.resultants[e](1));
+    const Vec6 dv = v.segment<6>(3 * e) - c.v_ref.segment<6>(3 * e);
+    const Vec6 f = k * dv;
+    out->element_force.segment<6>(3 * e) += f;
+    out->element_potential += 0.5 * dv.dot(f);
+    if (want_k) {
+      out->K_elements.diag(e) += k.block<3, 3>(0, 0);
+      out->K_elements.diag(e + 1) += k.block<3, 3>(3, 3);
+      out->K_elements.lower(e) += k.block<3, 3>(3, 0);
+    }
+  }
 }
 
 double AxisymModel::potential(const AxisymState& s, const Eigen::VectorXd& v_local,

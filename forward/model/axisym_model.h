@@ -16,10 +16,10 @@
 
 #include "contact/rigid_tool.h"
 #include "element/axisym2.h"
+#include "linalg/block_tridiag.h"
 #include "material/hardening.h"
 #include "material/viscous_law.h"
 #include "scene/scene.h"
-#include "linalg/block_tridiag.h"
 
 namespace vs {
 
@@ -55,6 +55,16 @@ struct AxisymState {
   std::vector<Eigen::Vector2d> tool_offset;  // per tool
   std::vector<NodeContact> contact;          // per node
   Eigen::VectorXd v;                         // last converged velocity (global frame)
+};
+
+// The implicit geometry update's coupling (stepping/step_driver.h): the velocity solve in the
+// end-of-step configuration x_n + scale v sees the change of its internal forces with that
+// configuration through the membrane initial-stress stiffness of the previous iterate's stress
+// resultants, K_g (scale) (v - v_ref), with potential (scale / 2) |v - v_ref|^2_K_g.
+struct GeometryCoupling {
+  double scale_s = 0.0;          // d x / d v = theta dt [s]
+  std::vector<Vec5> resultants;  // per element, of the previous iterate
+  Eigen::VectorXd v_ref;         // the previous iterate's velocity (global frame)
 };
 
 // One evaluation of the discrete system in the nodal (friction) frames.
@@ -163,6 +173,9 @@ class AxisymModel {
   // contact-event step does not demand the correction at a rate growing as 1 / dt.
   void set_squeeze_correction_time(double seconds) { squeeze_correction_s_ = seconds; }
   bool consistent_friction() const { return consistent_friction_; }
+  // The implicit geometry update's coupling term, or null (none: explicit update). The pointee
+  // must outlive the solves it is set for.
+  void set_geometry_coupling(const GeometryCoupling* c) { coupling_ = c; }
   void update_sandwiched(AxisymState* s) const;
   // Marks the contact nodes whose other surface reaches a second tool (not a fixed-gap holder,
   // which has its own gap model) and sets their clearance; clears the others.
@@ -216,6 +229,9 @@ class AxisymModel {
   // Fixed-gap holder penalty on flange elements (see the .cc); fills out->gap_pressure.
   void add_gap_holder(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
                       AxisymSystem* out) const;
+  // The geometry coupling's force, potential and (want_k) matrix.
+  void add_geometry_coupling(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
+                             AxisymSystem* out) const;
   // Squeeze (ironing) penalty on elements with a squeezed node; fills out->squeeze_pressure.
   void add_squeeze(const AxisymState& s, const Eigen::VectorXd& v_global, bool want_k,
                    AxisymSystem* out) const;
@@ -258,6 +274,7 @@ class AxisymModel {
   double step_dt_ = 0.0;     // step size the frozen material data were made for [s]
   double squeeze_correction_s_ = 0.0;  // shortest time over which an ironing overshoot is removed
   bool has_holder_ = false;
+  const GeometryCoupling* coupling_ = nullptr;
   // Frozen per step.
   std::vector<std::vector<double>> sigma_y_;              // per element, per point
   std::vector<std::vector<double>> hardening_viscosity_;  // per element, per point

@@ -265,6 +265,16 @@ void FormingModel::prepare(const FormingState& s) {
   for (int e = 0; e < ne; ++e) {
     shell9_operators(geometry(s, e), rule_, thick_, &operators_[static_cast<std::size_t>(e)]);
   }
+  coupling_k_.clear();
+  if (coupling_) {
+    coupling_k_.resize(static_cast<std::size_t>(ne));
+#pragma omp parallel for schedule(dynamic, 4)
+    for (int e = 0; e < ne; ++e) {
+      const std::size_t ue = static_cast<std::size_t>(e);
+      coupling_k_[ue] = coupling_->scale_s *
+                        shell9_stress_stiffness(geometry(s, e), rule_, coupling_->membrane[ue]);
+    }
+  }
 }
 
 void FormingModel::prescribe(int node, int k, double v) {
@@ -401,6 +411,32 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   c->force.swap(out.force);
   if (kind != Shell9Stiffness::kNone) c->stiffness.swap(out.stiffness);
   c->potential = out.potential;
+  if (!coupling_k_.empty()) add_coupling(e, qe, kind != Shell9Stiffness::kNone, c);
+}
+
+void FormingModel::add_coupling(int e, const Eigen::VectorXd& qe, bool want_matrix,
+                                ElementContribution* c) const {
+  // K_g acts on the global velocities F_a q_a of the nodes (F_a: the nodal frame, 5 element dofs
+  // per node, velocities first): force F_a^T sum_b k_ab dv_b, matrix blocks k_ab F_a^T F_b.
+  const Eigen::Matrix<double, 9, 9>& k = coupling_k_[static_cast<std::size_t>(e)];
+  const auto& conn = mesh_.elements[e];
+  std::array<Vec3, 9> dv;
+  for (int b = 0; b < 9; ++b) {
+    const int j = conn[b];
+    dv[b] = frame_[j] * qe.segment<3>(5 * b) - coupling_->v_ref[j];
+  }
+  for (int a = 0; a < 9; ++a) {
+    Vec3 f = Vec3::Zero();
+    for (int b = 0; b < 9; ++b) f += k(a, b) * dv[b];
+    c->force.segment<3>(5 * a) += frame_[conn[a]].transpose() * f;
+    c->potential += 0.5 * dv[a].dot(f);
+    if (!want_matrix) continue;
+    for (int b = 0; b < 9; ++b) {
+      if (k(a, b) == 0.0) continue;
+      c->stiffness.block<3, 3>(5 * a, 5 * b) +=
+          k(a, b) * frame_[conn[a]].transpose() * frame_[conn[b]];
+    }
+  }
 }
 
 double FormingModel::friction_limit(const NodeContact3& c) const {
@@ -569,9 +605,11 @@ double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) 
 }
 
 void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd& x,
-                               std::vector<std::vector<double>>* rates) const {
+                               std::vector<std::vector<double>>* rates,
+                               std::vector<std::vector<Vec3>>* membrane) const {
   const int ne = num_elements();
   rates->assign(ne, {});
+  if (membrane) membrane->assign(ne, {});
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
     const Eigen::VectorXd q = assembler_->gather(e, x);
@@ -584,6 +622,11 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
     shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
                     &out);
     (*rates)[e] = std::move(out.point_rate);
+    if (membrane) {
+      std::vector<Vec3>& m = (*membrane)[static_cast<std::size_t>(e)];
+      m.resize(out.resultant.size());
+      for (std::size_t p = 0; p < m.size(); ++p) m[p] = out.resultant[p].N;
+    }
   }
 }
 

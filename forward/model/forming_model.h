@@ -62,6 +62,15 @@ struct FormingState {
   std::vector<Vec3> omega;                   // last converged director angular velocity [1/s]
 };
 
+// The implicit geometry update's coupling (stepping/step_driver.h; as vs::GeometryCoupling of
+// the axisymmetric model): K_g (scale) (v - v_ref) with K_g the membrane initial-stress
+// stiffness (shell9_stress_stiffness) of the previous iterate's membrane forces.
+struct GeometryCoupling3 {
+  double scale_s = 0.0;                     // d x / d v = theta dt [s]
+  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
+  std::vector<Vec3> v_ref;                  // per node, global [mm/s]
+};
+
 // One evaluation in the nodal frames; the matrix lives in the model's assembler.
 struct FormingSystem {
   Eigen::VectorXd residual;        // local frames; zero at prescribed dofs
@@ -158,9 +167,15 @@ class FormingModel {
   void refresh_friction(const FormingState& s, const Eigen::VectorXd& x, FormingSystem* out);
   const SparseMatrix& matrix() const { return assembler_->matrix(); }
 
-  // Effective rate at every flow point (per element) at local velocities x.
+  // Effective rate at every flow point (per element) at local velocities x, and (if asked) the
+  // membrane forces (N11, N22, N12) at every in-plane point.
   void point_rates(const FormingState& s, const Eigen::VectorXd& x,
-                   std::vector<std::vector<double>>* rates) const;
+                   std::vector<std::vector<double>>* rates,
+                   std::vector<std::vector<Vec3>>* membrane = nullptr) const;
+
+  // The implicit geometry update's coupling term from the next prepare() on, or null (none).
+  // The pointee must outlive the solves it is set for.
+  void set_geometry_coupling(const GeometryCoupling3* c) { coupling_ = c; }
 
   // Element geometry of state s (directors, nodal thickness, director frames and nodal velocity
   // frames of prepare()).
@@ -188,6 +203,9 @@ class FormingModel {
  private:
   void element_kernel(const FormingState& s, int e, const Eigen::VectorXd& qe, Shell9Stiffness kind,
                       double theta, ElementContribution* c);
+  // The geometry coupling's force, potential and (want_matrix) matrix on element e.
+  void add_coupling(int e, const Eigen::VectorXd& qe, bool want_matrix,
+                    ElementContribution* c) const;
   // Adds the Coulomb friction terms at x to out (residual, potential, matrix if want_matrix) and
   // records them in friction_; with `replace`, first removes the recorded ones.
   void friction(const FormingState& s, const Eigen::VectorXd& x, bool want_matrix, double theta,
@@ -241,8 +259,10 @@ class FormingModel {
     Shell9Stiffness kind = Shell9Stiffness::kNone;
   };
   FrictionRecord friction_;
+  const GeometryCoupling3* coupling_ = nullptr;
   // Per prepare().
-  std::vector<Shell9Operators> operators_;  // per element
+  std::vector<Shell9Operators> operators_;               // per element
+  std::vector<Eigen::Matrix<double, 9, 9>> coupling_k_;  // per element, scale K_g (with coupling_)
   std::vector<Mat3> frame_;
   std::vector<Vec3> v1_, v2_;
   std::vector<char> mask_;

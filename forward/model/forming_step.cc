@@ -94,7 +94,7 @@ void FormingStepProblem::finish(const Eigen::VectorXd& x) {
     punch_force_ += (model_.frame(i) * reaction.segment<3>(m.dof(i, 0))).z();
   }
   punch_force_ *= model_.symmetry_factor();
-  model_.point_rates(*state_, x, &rates_);
+  model_.point_rates(*state_, x, &rates_, &membrane_);
   max_rate_ = 0.0;
   for (const auto& r : rates_)
     for (double v : r) max_rate_ = std::max(max_rate_, v);

@@ -77,7 +77,17 @@ const char* name(SolverKind kind) {
   return "unknown";
 }
 
-const char* name(TimeIntegration t) { return t == TimeIntegration::kHeun ? "heun" : "euler"; }
+const char* name(TimeIntegration t) {
+  switch (t) {
+    case TimeIntegration::kHeun:
+      return "heun";
+    case TimeIntegration::kEuler:
+      return "euler";
+    case TimeIntegration::kImplicit:
+      return "implicit";
+  }
+  return "heun";
+}
 
 Json tool_json(const ToolSpec& t) {
   Json j;

@@ -121,6 +121,9 @@ enum class SolverKind {
 enum class TimeIntegration {
   kHeun,   // explicit trapezoidal predictor-corrector: two velocity solves per step, O(dt^2)
   kEuler,  // the paper's forward update with the start-of-step velocity: O(dt)
+  // backward Euler in the geometry: the velocity solved in the end-of-step configuration, with
+  // the configuration's dependence on the velocity in the solve (stable at any step)
+  kImplicit,
 };
 
 // Strain evaluation of the 9-node shell (geometry = shell3d; forward/shell3d/shell9.h).
@@ -133,14 +136,19 @@ struct NumericsSpec {
   int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
   TimeIntegration time_integration = TimeIntegration::kHeun;
+  // Weight of the end-of-step velocity in the implicit update x_{n+1} = x_n + dt ((1 - theta)
+  // v_n + theta v_{n+1}): 1/2 trapezoidal (second order), 1 backward Euler (first order, damps
+  // the stiffest modes completely).
+  double implicit_theta = 0.5;
   double tolerance = 1e-6;                // relative velocity change and relative residual
   int max_iterations = 100;               // per step, before the step is cut back
   double step_fraction = 1.0;             // fraction of the contact-event step taken when far
   double max_travel_increment_mm = 0.25;  // cap on punch travel per step
   // Second cap on the travel per step, relative to the shortest initial element length. The
-  // explicit (Heun) geometry update is stable only below a travel increment proportional to the
-  // element length: above it the deformation mechanism of nearly rigid free regions switches from
-  // step to step and outputs jitter by up to 1 % (experiments/06_step_stability).
+  // explicit (Heun) update needs it: above it the deformation mechanism of nearly rigid free
+  // regions switches from step to step and outputs jitter by up to 1 %; the implicit update is
+  // stable at any step, where this cap is for accuracy only (0.25 is smooth and within 0.2 % in
+  // force on ex1; experiments/06_step_stability).
   double max_travel_increment_per_length = 0.025;
   double max_strain_increment = 0.02;     // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius

@@ -72,7 +72,13 @@ class AxisymStepper {
   }
   void set_grid_increment(double mm) {
     grid_increment_mm_ = mm;
-    model_.set_squeeze_correction_time(mm / scene_.process.punch_speed_mm_per_s);
+    // The implicit update moves the geometry with theta of the end-of-step rate: the ironing
+    // constraint on that rate removes an overshoot over a grid step when asked to do so in
+    // theta of the step.
+    const double theta = scene_.numerics.time_integration == TimeIntegration::kImplicit
+                             ? scene_.numerics.implicit_theta
+                             : 1.0;
+    model_.set_squeeze_correction_time(theta * mm / scene_.process.punch_speed_mm_per_s);
   }
   AxisymState initial_state() const { return model_.initial_state(); }
   void place_tools(const AxisymState& s) { model_.place_tools(s); }
@@ -86,7 +92,17 @@ class AxisymStepper {
   void move(const Solved& from, double dt, AxisymState* to) const;
   // Element thickness from its constant volume and current geometry; false if degenerate.
   bool update_thickness(AxisymState& s, std::string* why) const;
-  Solved average(const Solved& a, const Solved& b) const;
+  Solved blend(const Solved& a, const Solved& b, double w) const;
+  void couple_geometry(const Solved* ref, double scale_s) {
+    if (!ref) {
+      model_.set_geometry_coupling(nullptr);
+      return;
+    }
+    coupling_.scale_s = scale_s;
+    coupling_.resultants = ref->resultants;
+    coupling_.v_ref = ref->state.v;
+    model_.set_geometry_coupling(&coupling_);
+  }
   void attach_touching(const AxisymState& predicted, AxisymState* corrected,
                        const ContactHolds& holds);
   void start_from(const Solved& from, Solved* to) const {
@@ -127,6 +143,7 @@ class AxisymStepper {
   StepDriverOptions driver_;
   AxisymModel model_;
   NewtonOptions nl_;
+  GeometryCoupling coupling_;  // the implicit update's, while couple_geometry() has set it
   double grid_increment_mm_ = 0.0;
   double contact_tol_ = 0.0;  // gap below which a node touches a tool
   double attach_tol_ = 0.0;   // search tolerance next to a touching neighbour
@@ -383,11 +400,11 @@ void AxisymStepper::move(const Solved& from, double dt, AxisymState* to) const {
   s.time_s += dt;
 }
 
-Solved AxisymStepper::average(const Solved& a, const Solved& b) const {
+Solved AxisymStepper::blend(const Solved& a, const Solved& b, double w) const {
   Solved mid;
   mid.state = a.state;
-  mid.state.v = 0.5 * (a.state.v + b.state.v);
-  mid.point_rates = mean_point_rates(a.point_rates, b.point_rates);
+  mid.state.v = (1.0 - w) * a.state.v + w * b.state.v;
+  mid.point_rates = blend_point_rates(a.point_rates, b.point_rates, w);
   return mid;
 }
 

@@ -37,6 +37,7 @@ struct Solved {
   double punch_force = 0.0;
   double max_rate = 0.0;
   std::vector<std::vector<double>> point_rates;
+  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
   NewtonSummary summary;
 };
 
@@ -118,7 +119,17 @@ class Shell3dStepper {
   double contact_time(const FormingState& s, int node, double horizon) const;
   void move(const Solved& from, double dt, FormingState* to) const;
   bool update_thickness(FormingState& s, std::string* why) const;
-  Solved average(const Solved& a, const Solved& b) const;
+  Solved blend(const Solved& a, const Solved& b, double w) const;
+  void couple_geometry(const Solved* ref, double scale_s) {
+    if (!ref) {
+      model_.set_geometry_coupling(nullptr);
+      return;
+    }
+    coupling_.scale_s = scale_s;
+    coupling_.membrane = ref->membrane;
+    coupling_.v_ref = ref->state.velocity;
+    model_.set_geometry_coupling(&coupling_);
+  }
   void attach_touching(const FormingState& predicted, FormingState* corrected,
                        const ContactHolds& holds);
   void start_from(const Solved& from, Solved* to) const {
@@ -147,6 +158,7 @@ class Shell3dStepper {
   StepDriverOptions driver_;
   std::shared_ptr<ShellFields> fields_ = std::make_shared<ShellFields>();
   FormingModel model_;
+  GeometryCoupling3 coupling_;  // the implicit update's, while couple_geometry() has set it
   SparseCholeskySolver linear_;
   NewtonOptions nl_;
   double grid_increment_mm_ = 0.0;
@@ -304,6 +316,7 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
       out->punch_force = problem.punch_force();
       out->max_rate = problem.max_point_rate();
       out->point_rates = problem.point_rates();
+      out->membrane = problem.membrane_forces();
       return true;
     }
   }
@@ -371,14 +384,14 @@ void Shell3dStepper::move(const Solved& from, double dt, FormingState* to) const
   s.time_s += dt;
 }
 
-Solved Shell3dStepper::average(const Solved& a, const Solved& b) const {
+Solved Shell3dStepper::blend(const Solved& a, const Solved& b, double w) const {
   Solved mid;
   mid.state = a.state;
   for (int i = 0; i < model_.num_nodes(); ++i) {
-    mid.state.velocity[i] = 0.5 * (a.state.velocity[i] + b.state.velocity[i]);
-    mid.state.omega[i] = 0.5 * (a.state.omega[i] + b.state.omega[i]);
+    mid.state.velocity[i] = (1.0 - w) * a.state.velocity[i] + w * b.state.velocity[i];
+    mid.state.omega[i] = (1.0 - w) * a.state.omega[i] + w * b.state.omega[i];
   }
-  mid.point_rates = mean_point_rates(a.point_rates, b.point_rates);
+  mid.point_rates = blend_point_rates(a.point_rates, b.point_rates, w);
   return mid;
 }
 

@@ -22,7 +22,8 @@
 //   double contact_time(const State&, int node, double horizon);   (earliest tool, eq. 53)
 //   void move(const Solved& from, double dt, State* to);     (x, directors, tools, eps_bar, t)
 //   bool update_thickness(State&, std::string* why);
-//   Solved average(const Solved& a, const Solved& b);         (Heun: mean rates, a's state)
+//   Solved blend(const Solved& a, const Solved& b, double w);  (a's state, rates (1-w) a + w b)
+//   void couple_geometry(const Solved* ref, double scale_s);  (implicit: coupling, null = off)
 //   void attach_touching(const State& predicted, State* corrected, const ContactHolds&);
 //   void start_from(const Solved& predicted, Solved* corrected);   (start velocity, duals)
 //   const std::vector<double>& eps_bar(const State&);         (the predictor hardens from it)
@@ -53,12 +54,14 @@
 
 namespace vs {
 
-// The Heun mean of two sets of point rates (per element and point), for the steppers' average().
-inline std::vector<std::vector<double>> mean_point_rates(
-    const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+// (1 - w) a + w b of two sets of point rates (per element and point), for the steppers'
+// blend(): w = 1/2 is Heun's mean, w = 1 the implicit update's end-of-step rates.
+inline std::vector<std::vector<double>> blend_point_rates(const std::vector<std::vector<double>>& a,
+                                                          const std::vector<std::vector<double>>& b,
+                                                          double w) {
   std::vector<std::vector<double>> mid = a;
   for (std::size_t e = 0; e < mid.size(); ++e) {
-    for (std::size_t k = 0; k < mid[e].size(); ++k) mid[e][k] = 0.5 * (a[e][k] + b[e][k]);
+    for (std::size_t k = 0; k < mid[e].size(); ++k) mid[e][k] = (1.0 - w) * a[e][k] + w * b[e][k];
   }
   return mid;
 }
@@ -95,6 +98,7 @@ class StepDriver {
   double choose_dt(const Solved& from, double cap_factor);
   bool advance(const Solved& from, double dt, State* to, std::string* why);
   bool take_step(const Solved& from, double dt, Solved* to, std::string* why);
+  bool take_implicit_step(const Solved& from, double dt, Solved* to, std::string* why);
   void finish(double total_s, RunResult* result);
 
   const Scene& scene_;
@@ -117,6 +121,8 @@ double StepDriver<Stepper>::choose_dt(const Solved& from, double cap_factor) {
                                        scene_.numerics.max_strain_increment, from.max_rate);
   // Next contact event (paper eq. 53, any tool, any free node), looked for a little beyond the
   // cap so that the step fraction can approach it gradually.
+  if (scene_.numerics.time_integration == TimeIntegration::kImplicit && !options_.implicit_events)
+    return cap;
   const double frac = scene_.numerics.step_fraction;
   const double horizon = cap / frac;
   double dt_event = std::numeric_limits<double>::infinity();
@@ -144,6 +150,9 @@ bool StepDriver<Stepper>::advance(const Solved& from, double dt, State* to, std:
 template <class Stepper>
 bool StepDriver<Stepper>::take_step(const Solved& from, double dt, Solved* to, std::string* why) {
   g_.start_from(from, to);
+  if (scene_.numerics.time_integration == TimeIntegration::kImplicit) {
+    return take_implicit_step(from, dt, to, why);
+  }
   if (scene_.numerics.time_integration == TimeIntegration::kEuler) {
     return advance(from, dt, &to->state, why) && g_.solve(to, dt, nullptr, holds_, why);
   }
@@ -166,13 +175,49 @@ bool StepDriver<Stepper>::take_step(const Solved& from, double dt, Solved* to, s
       !g_.solve(&pred, dt, &g_.eps_bar(from.state), holds_, why)) {
     return false;
   }
-  const Solved mid = g_.average(from, pred);
+  const Solved mid = g_.blend(from, pred, 0.5);
   if (!advance(mid, dt, &to->state, why)) return false;
   // Nodes the predictor found touching at the end of the step touch in the corrected state too.
   g_.attach_touching(pred.state, &to->state, holds_);
   if (!g_.update_thickness(to->state, why)) return false;
   g_.start_from(pred, to);  // the best start for the corrected solve
   return g_.solve(to, dt, nullptr, holds_, why);
+}
+
+// Backward Euler in the geometry: x_{n+1} = x_n + dt v_{n+1}, with v_{n+1} the velocity solved in
+// the configuration x_{n+1} (and the hardening from the step start, as the predictor's). Why: a
+// nearly rigid free region (the unsupported wall between punch and die) has its shape slaved to
+// equilibrium; a shape error w of wavelength l is undone by the membrane tension N against only
+// the bending viscosity, at the rate lambda ~ 12 N / (mu h^3 l^-2) = 36 eps_dot (l / h)^2. The
+// explicit update is stable only for lambda dt < 2 (that is the 0.025 element lengths per step
+// cap); backward Euler damps the mode by 1 / (1 + lambda dt) at any step.
+// How: Newton on the geometry. Solve k moves the start state with the previous solve's velocity
+// v_k (the first: with the start velocity, Euler's predictor) and solves there with the
+// configuration's dependence on the velocity linearised: the membrane initial-stress stiffness
+// K_g of the previous solve's stresses, dt K_g (v - v_k) (the models' GeometryCoupling). K_g holds
+// the stiff mode (the tension against a change of shape), so the iteration converges where the
+// plain fixed point (Heun's corrector) diverges. A fixed number of solves per step
+// (StepDriverOptions::implicit_solves) keeps the step a smooth map of the parameters.
+template <class Stepper>
+bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solved* to,
+                                             std::string* why) {
+  struct Uncouple {
+    Stepper& g;
+    ~Uncouple() { g.couple_geometry(nullptr, 0.0); }
+  } uncouple{g_};
+  Solved previous = from;  // the iterate whose velocity moves the geometry
+  for (int k = 0; k < options_.implicit_solves; ++k) {
+    const double theta = scene_.numerics.implicit_theta;
+    const Solved moving = g_.blend(from, previous, theta);
+    g_.start_from(previous, to);
+    if (!advance(moving, dt, &to->state, why)) return false;
+    if (k > 0) g_.attach_touching(previous.state, &to->state, holds_);
+    if (!g_.update_thickness(to->state, why)) return false;
+    g_.couple_geometry(&previous, theta * dt);
+    if (!g_.solve(to, dt, &g_.eps_bar(from.state), holds_, why)) return false;
+    if (k + 1 < options_.implicit_solves) previous = *to;
+  }
+  return true;
 }
 
 template <class Stepper>

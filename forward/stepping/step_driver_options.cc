@@ -22,6 +22,7 @@ bool StepDriverOptions::IsValid(std::string* why) const {
     return fail("stall_fraction must be in (0, 1)");
   if (!(min_thickness_ratio > 0.0 && min_thickness_ratio < 1.0 && max_thickness_ratio > 1.0))
     return fail("thickness ratios must bracket 1");
+  if (implicit_solves < 1) return fail("implicit_solves must be at least 1");
   return true;
 }
 

@@ -153,43 +153,69 @@ TEST(ExperimentsQuick, ScaledGeometryGivesScaledAnswers) {
   EXPECT_LT(m.eps_t_max_abs, 1e-4);
 }
 
-// 06_step_stability in small: a punch-friction sweep of 2e-4 moves the outputs smoothly at the
-// default travel step and visibly less so at a step four times larger (the stability limit of
-// the explicit geometry update). Measured (24 elements, F at 14 mm): jitter 1.9e-8 / 2.3e-4 of
-// the force, load roughness 0.050 / 0.066; with the midpoint hardening used before Nov 2026 it
-// was 3.7e-4 / 3.8e-3 and 0.042 / 0.19 (the backward-Euler hardening removed most of it).
+// 06_step_stability in small: a punch-friction sweep of 2e-4 (24 elements, F at 14 mm), its
+// largest deviation from a straight line ("jitter") and the load curve's roughness.
+struct StepSweep {
+  double jitter = 0.0, roughness = 0.0;
+};
+StepSweep sweep_friction(const char* integration, const char* per_length) {
+  std::vector<double> mu, f;
+  StepSweep out;
+  for (int k = 0; k < 5; ++k) {
+    const double m = 0.099 + 0.0005 * k;
+    const vs::Scene scene =
+        make_scene(kEx1, {{"blank.elements", "24"},
+                          {"process.punch_travel_mm", "16"},
+                          {"process.output_travels_mm", "[16.0]"},
+                          {"material.r_value", "1.5"},
+                          {"numerics.tolerance", "1e-8"},
+                          {"numerics.time_integration", integration},
+                          {"numerics.max_travel_increment_mm", "5"},
+                          {"numerics.max_travel_increment_per_length", per_length},
+                          {"tool.punch.friction", fmt::format("{:.6f}", m)}});
+    const TimedRun run = run_once(scene, kInf);
+    EXPECT_TRUE(run.result.completed()) << run.result.message;
+    if (!run.result.completed()) return {1.0, 1.0};
+    mu.push_back(m);
+    f.push_back(force_at(run.result, 14.0));
+    if (k == 2) out.roughness = load_roughness(run.result, 6.0, 16.0);
+  }
+  out.jitter = linear_fit_max_deviation(mu, f) / f.front();
+  return out;
+}
+
+// The explicit (Heun) update is smooth at its default step and visibly less so at a step four
+// times larger (its stability limit). Measured: jitter 1.9e-8 / 2.3e-4 of the force, load
+// roughness 0.050 / 0.066; with the midpoint hardening used before Nov 2026 it was 3.7e-4 /
+// 3.8e-3 and 0.042 / 0.19 (the backward-Euler hardening removed most of it).
 TEST(ExperimentsQuick, StepStabilityDefaultStepIsSmoothInTheParameters) {
-  auto sweep = [](const char* per_length, double* jitter, double* rough) {
-    std::vector<double> mu, f;
-    for (int k = 0; k < 5; ++k) {
-      const double m = 0.099 + 0.0005 * k;
-      const vs::Scene scene =
-          make_scene(kEx1, {{"blank.elements", "24"},
-                            {"process.punch_travel_mm", "16"},
-                            {"process.output_travels_mm", "[16.0]"},
-                            {"material.r_value", "1.5"},
-                            {"numerics.tolerance", "1e-8"},
-                            {"numerics.max_travel_increment_per_length", per_length},
-                            {"tool.punch.friction", fmt::format("{:.6f}", m)}});
-      const TimedRun run = run_once(scene, kInf);
-      ASSERT_TRUE(run.result.completed()) << run.result.message;
-      mu.push_back(m);
-      f.push_back(force_at(run.result, 14.0));
-      if (k == 2) *rough = load_roughness(run.result, 6.0, 16.0);
-    }
-    *jitter = linear_fit_max_deviation(mu, f) / f.front();
-  };
-  double jitter_default = 0, rough_default = 0, jitter_large = 0, rough_large = 0;
-  sweep("0.025", &jitter_default, &rough_default);
-  sweep("0.1", &jitter_large, &rough_large);
+  const StepSweep small = sweep_friction("heun", "0.025");
+  const StepSweep large = sweep_friction("heun", "0.1");
   fmt::print(
-      "step 0.025 l: jitter {:.2e}, roughness {:.3f}; step 0.1 l: jitter {:.2e}, roughness "
-      "{:.3f}\n",
-      jitter_default, rough_default, jitter_large, rough_large);
-  EXPECT_LT(jitter_default, 1e-5);
-  EXPECT_LT(rough_default, 0.1);
-  EXPECT_LT(rough_large, 0.1);
-  EXPECT_GT(jitter_large, 100.0 * jitter_default);
+      "heun: step 0.025 l: jitter {:.2e}, roughness {:.3f}; 0.1 l: jitter {:.2e}, "
+      "roughness {:.3f}\n",
+      small.jitter, small.roughness, large.jitter, large.roughness);
+  EXPECT_LT(small.jitter, 1e-5);
+  EXPECT_LT(small.roughness, 0.1);
+  EXPECT_LT(large.roughness, 0.1);
+  EXPECT_GT(large.jitter, 100.0 * small.jitter);
+}
+
+// The implicit geometry update is stable where Heun is not: at 0.2 element lengths per step
+// (0.49 mm) the implicit update's outputs stay smooth in the parameters to the 1e-6,
+// while Heun's jitter by orders of magnitude more (measured in the 06 study at 16-20 mm:
+// implicit 2e-8 at 0.1-0.4 element lengths; Heun 3e-3 at 0.2, roughness 0.24).
+TEST(ExperimentsQuick, ImplicitUpdateIsSmoothWhereHeunIsUnstable) {
+  const StepSweep implicit = sweep_friction("implicit", "0.2");
+  const StepSweep heun = sweep_friction("heun", "0.2");
+  fmt::print(
+      "step 0.2 l: implicit jitter {:.2e}, roughness {:.3f}; heun jitter {:.2e}, "
+      "roughness {:.3f}\n",
+      implicit.jitter, implicit.roughness, heun.jitter, heun.roughness);
+  EXPECT_LT(implicit.jitter, 1e-6);
+  EXPECT_LT(implicit.roughness, 0.1);
+  EXPECT_GT(heun.jitter, 100.0 * implicit.jitter);
+  EXPECT_GT(heun.roughness, 2.0 * implicit.roughness);
 }
 
 #ifdef VS_HAVE_SHELL3D
