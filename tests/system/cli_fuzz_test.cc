@@ -213,6 +213,76 @@ TEST(CliFuzz, CalibrateHelpPointsToTheReference) {
   EXPECT_NE(o.out.find("docs/calibration-reference.md"), std::string::npos) << o.out;
 }
 
+// The exit codes of `vshell run` (README "Using it"): 0 completed, with every --set applied to
+// the run; 3 stopped (the reason on stderr, everything up to the last converged step written);
+// 2 bad input, one line naming the key or file, for each class of bad input.
+TEST(CliRun, CompletedRunExitsZeroAndAppliesEverySet) {
+  const fs::path dir = scratch();
+  const Outcome o = vshell(dir, "run '" + kScene +
+                                    "' --set process.punch_travel_mm=2 --set blank.elements=12 "
+                                    "--set 'process.output_travels_mm=[2.0]' -o out");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  const std::string csv = read_all(dir / "out" / "load_travel.csv");
+  ASSERT_FALSE(csv.empty());
+  // The last row is the 2 mm travel of the override (the scene says 30 mm).
+  auto field = [](const std::string& line, int k) {
+    std::stringstream s(line);
+    std::string f;
+    for (int i = 0; i <= k; ++i) std::getline(s, f, ',');
+    return f;
+  };
+  const std::string header = csv.substr(0, csv.find('\n'));
+  int column = -1;
+  for (int k = 0; k < 40; ++k) {
+    if (field(header, k) == "punch_travel_mm") column = k;
+  }
+  ASSERT_GE(column, 0) << header;
+  const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+  EXPECT_NEAR(std::stod(field(last, column)), 2.0, 1e-9) << last;
+  // 12 elements: the 2 mm profile has 12 rows after its comment and header lines.
+  const std::string profile = read_all(dir / "out" / "strains_travel_002.00mm.csv");
+  EXPECT_EQ(std::count(profile.begin(), profile.end(), '\n'), 14) << profile.substr(0, 200);
+}
+
+TEST(CliRun, StoppedRunExitsThreeWithTheReasonAndKeepsItsSteps) {
+  // One iteration per step and no cut-backs: the first step cannot converge, the run stops.
+  const fs::path dir = scratch();
+  const Outcome o =
+      vshell(dir, "run '" + kScene +
+                      "' --set numerics.max_iterations=1 --set numerics.max_cutbacks=0 "
+                      "--set blank.elements=12 -o out");
+  EXPECT_EQ(o.exit_code, 3) << o.err.substr(0, 300);
+  EXPECT_FALSE(o.signalled);
+  // The summary names the termination and its reason.
+  EXPECT_NE(o.out.find("termination       failed"), std::string::npos) << o.out.substr(0, 300);
+  EXPECT_NE(o.out.find("did not converge"), std::string::npos) << o.out.substr(0, 300);
+  EXPECT_FALSE(read_all(dir / "out" / "load_travel.csv").empty());
+}
+
+TEST(CliRun, EachClassOfBadInputExitsTwoWithOneLineNamingIt) {
+  const fs::path dir = scratch();
+  const std::string run = "run '" + kScene + "' -o out ";
+  struct Case {
+    std::string args, named;
+  };
+  for (const Case& c : std::vector<Case>{
+           {run + "--set blank.elemnts=12", "blank.elemnts"},      // unknown key
+           {run + "--set blank.elements=many", "blank.elements"},  // wrong type
+           {run + "--set blank.elements=-3", "blank.elements"},    // out of range
+           {run + "--set blank.elements", "blank.elements"},       // --set without a value
+           {"run '" + (dir / "no_such_scene.toml").string() + "'", "no_such_scene.toml"},
+           {"check '" + (dir / "no_such_scene.toml").string() + "'", "no_such_scene.toml"}}) {
+    const Outcome o = vshell(dir, c.args);
+    expect_bad_input(o, c.args);
+    EXPECT_NE(o.err.find(c.named), std::string::npos) << c.args << ": " << o.err;
+  }
+  // A scene with a syntax error: file and line named.
+  write(dir / "broken.toml", "[blank]\nthickness_mm = = 1\n");
+  const Outcome b = vshell(dir, "check broken.toml");
+  expect_bad_input(b, "broken.toml");
+  EXPECT_NE(b.err.find("broken.toml:2"), std::string::npos) << b.err;
+}
+
 }  // namespace
 }  // namespace vs
 

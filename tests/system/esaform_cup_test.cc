@@ -10,6 +10,11 @@
 
 namespace {
 
+// Measured cup (data/measured/esaform2021-aa6016t4-cup): mean height and the ear extremes [mm].
+constexpr double kMeanHeight_mm = 34.15;
+constexpr double kLowestEar_mm = 33.13;
+constexpr double kHighestEar_mm = 35.26;
+
 TEST(EsaformCup, DrawsCompletelyAndPredictsTheMeasuredHeight) {
   // The bundled scene: 40 mm of punch travel; the rim enters the die opening at ~38.6 mm. (Past
   // the full draw the solver may stop without convergence; the drawn state is what counts.)
@@ -20,9 +25,14 @@ TEST(EsaformCup, DrawsCompletelyAndPredictsTheMeasuredHeight) {
   EXPECT_GT(cup.flange_off_travel_mm, 0.0);
   EXPECT_LT(cup.flange_off_travel_mm, cup.travel_mm);
   // An axisymmetric model predicts the mean height; the ears span 33.13-35.26 mm (-3 %/+3 %).
-  // Tolerance 10 % of the mean: with the holder as a force the model predicts 32.4 mm (-5.2 %),
-  // below the lowest ear (README.md of experiments/04_esaform_cup).
-  EXPECT_NEAR(cup.height_mm, 34.15, 0.10 * 34.15);
+  // With the holder as a force (not the benchmark's fixed gap) the model predicts 32.4 mm
+  // (-5.2 %), below the lowest ear: a MODEL-FORM GAP of this scene (README.md of
+  // experiments/04_esaform_cup), not a tolerance of the prediction. Bounds: no higher than the
+  // highest ear, and no lower than that gap plus 1 % of the mean (the fixed-gap holder below is
+  // the benchmark's and must fall inside the ears). The benchmark publishes no punch force for
+  // this cup (data/measured/esaform2021-aa6016t4-cup), so the force is not checked.
+  EXPECT_LT(cup.height_mm, kHighestEar_mm);
+  EXPECT_GT(cup.height_mm, (1.0 - 0.062) * kMeanHeight_mm);
   // Once the rim is in the die opening the height no longer changes much.
   EXPECT_NEAR(cup.height_end_mm, cup.height_mm, 1.0);
 }
@@ -34,7 +44,9 @@ TEST(EsaformCup, FixedGapHolderDrawsCompletely) {
   const vs::RunResult result = vs::simulate(scene);
   const vsx::CupHeight cup = vsx::evaluate_cup(result, vsx::cup_geometry(scene));
   ASSERT_TRUE(cup.drawn) << "rim still at r = " << cup.rim_r_mm << " mm; " << result.message;
-  EXPECT_NEAR(cup.height_mm, 34.15, 0.05 * 34.15);
+  // Inside the measured ears (a mean-height model of an eared cup can do no better).
+  EXPECT_GT(cup.height_mm, kLowestEar_mm);
+  EXPECT_LT(cup.height_mm, kHighestEar_mm);
 }
 
 // A node that becomes squeezed between punch and die at a contact event (a step ~1/10 of the

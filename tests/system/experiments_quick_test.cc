@@ -44,7 +44,6 @@ TEST(ExperimentsQuick, PerformanceMeshRefinementConverges) {
                                 kInf);
     ASSERT_TRUE(t.result.completed()) << t.result.message;
     EXPECT_TRUE(t.result.warnings.empty()) << n << " elements: outside the valid mesh range";
-    EXPECT_GT(t.wall_s, 0.0);
     peak.push_back(peak_load(t.result).force_N);
   }
   EXPECT_LT(rel(peak[0], peak[3]), 0.04);
@@ -105,7 +104,7 @@ TEST(ExperimentsQuick, WorkPrecisionErrorDecreasesWithRefinement) {
   const Errors e0 = errors_against(all[0], ref), e1 = errors_against(all[1], ref);
   EXPECT_LT(e1.peak, e0.peak);
   EXPECT_LT(e1.curve, e0.curve);
-  EXPECT_GT(e0.strain_abs, 0.0);
+  EXPECT_LT(e1.strain_abs, e0.strain_abs);
   EXPECT_LT(e0.combined, 0.5);
 }
 
@@ -294,7 +293,6 @@ TEST(ExperimentsQuick, CalibrationCostCoarseModelBias) {
     fmt::print("{}: K {:+.3f} %, {} forward runs, {:.1f} s\n", label, 100 * f->error[1],
                f->forward_runs, f->wall_s);
     EXPECT_TRUE(f->converged) << label << ": " << f->message;
-    EXPECT_EQ(f->error[0], 0.0) << "friction is fixed";
   }
   EXPECT_LT(std::abs(self.error[1]), kCalibrationSelfTolerance);
   EXPECT_LT(std::abs(coarse.error[1]), kCalibrationCoarseBiasLimit);
