@@ -346,8 +346,7 @@ bool Shell3dStepper::update_thickness(FormingState& s, std::string* why) const {
           "node {} (initial position x {:.3g}, y {:.3g} mm) reached thickness {:.3g} mm = {:.3g} "
           "x initial, outside [{}, {}] x initial: {}",
           i, p.x(), p.y(), h, h / h0, driver_.min_thickness_ratio, driver_.max_thickness_ratio,
-          h < driver_.min_thickness_ratio * h0 ? "the sheet has necked through (fracture)"
-                                               : "the mesh is folding onto itself");
+          thickness_limit_reason(h, h0, driver_, shortest_element_mm(), "divisions"));
       return false;
     }
     s.thickness[i] = h;
