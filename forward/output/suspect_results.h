@@ -22,8 +22,9 @@ struct LoadCurveNoise {
   // Noise-like: at least kMinReversals reversals and at least kReversalFraction of the
   // increments reversing. A forming curve rises, peaks and falls; contact events and ironing add
   // a few wiggles. Measured (default numerics): ex1 16 reversals in 1046 increments, ex2 16 in
-  // 1228, the ex3 cup 112 in 1584 (7 %, ironing) and 90 in 1604 with the fixed-gap holder;
-  // ex1 with thickness 1e-4 x the punch radius 678 in 1104 (61 %).
+  // 1228, the ex3 cup 112 in 1584 (7 %, ironing) and 90 in 1604 with the fixed-gap holder,
+  // ex4a (3D, sticking, 30 mm) 24 in 501; ex1 with thickness 1e-4 x the punch radius 678 in 1104
+  // (61 %).
   bool noise_like = false;
   static constexpr int kMinReversals = 20;
   static constexpr double kReversalFraction = 0.25;
