@@ -120,9 +120,10 @@ int run_command(const RunArgs& args) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  for (const std::string& w : result.warnings) std::cerr << "warning: " << w << '\n';
+  const vs::RunSummary summary = vs::summarize_run(scene, result);
+  for (const std::string& w : summary.warnings) std::cerr << "warning: " << w << '\n';
   const vs::RunTimings& t = result.timings;
-  std::cout << vs::summary_report(vs::summarize_run(result)) << '\n'
+  std::cout << vs::summary_report(summary) << '\n'
             << fmt::format("model             {}\n", model_line(result))
             << fmt::format(
                    "time split        assembly {:.2f} s, linear solves {:.2f} s, contact {:.2f} s "
@@ -187,9 +188,10 @@ int main(int argc, char** argv) {
       "run",
       "Run a scene (either geometry) and write its run folder: load_travel.csv (streamed during "
       "the run), thinnest_point.csv, strains_travel_<travel>mm.csv (3D: "
-      "strains_travel_<travel>mm_<line>.csv for the lines x, y, diagonal), fld_points.csv, "
+      "strains_travel_<travel>mm_<line>.csv for the lines x, y, diagonal), fld_points.csv "
+      "(with each element's margin to the forming-limit curve of [forming_limit]), "
       "strain_paths.csv (axisymmetric with output.history), stage_<k>.vtu + stages.pvd (3D, "
-      "ParaView), SVG plots and run.json");
+      "ParaView, stage_0 at zero travel), SVG plots and run.json");
   add_scene_args(*run, run_args.scene);
   run->add_option("-o,--output", run_args.output_dir,
                   "Output folder, created if missing (default: the scene's output.directory, "

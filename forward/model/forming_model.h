@@ -92,6 +92,10 @@ class FormingModel {
   int num_elements() const { return mesh_.num_elements(); }
   int num_dofs() const { return model_->num_dofs(); }
   int flow_points() const { return flow_points_; }  // per element
+  // The material of the flow points (output: a point's effective stress is
+  // law().effective_stress(hardening().flow_stress(eps_bar), rate)).
+  const Hardening& hardening() const { return hardening_; }
+  const ViscousLaw& law() const { return law_; }
   int thickness_points() const { return static_cast<int>(thick_.zeta.size()); }
   const std::vector<RigidTool>& tools() const { return tools_; }
   int punch_index() const { return punch_; }

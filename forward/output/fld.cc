@@ -6,9 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "model/forming_fields.h"
 #include "output/number_format.h"
 #include "output/profile_csv.h"
-#include "model/forming_fields.h"
 
 namespace vs {
 namespace {
@@ -75,6 +75,8 @@ std::vector<FldPoint> fld_points(const Profile* state) {
     p.eps_minor = e.minor;
     p.eps_thickness = at(state->eps_thickness, i);
     p.eps_effective = at(state->eps_effective, i);
+    p.thinning_percent = thinning_percent(p.eps_thickness);
+    p.flc_eps_major = p.flc_margin = kNaN;
     points.push_back(p);
   }
   return points;
@@ -101,19 +103,42 @@ std::vector<FldPoint> fld_points(const RunResult& result) {
     p.eps_minor = e.minor[k];
     p.eps_thickness = e.thickness[k];
     p.eps_effective = e.effective[k];
+    p.thinning_percent = thinning_percent(p.eps_thickness);
+    p.flc_eps_major = p.flc_margin = kNaN;
     points.push_back(p);
   }
   return points;
 }
 
+void apply_forming_limit(const FormingLimitCurve& flc, std::vector<FldPoint>* points) {
+  for (FldPoint& p : *points) {
+    const FormingMargin m = forming_margin(flc, p.eps_major, p.eps_minor);
+    p.flc_eps_major = flc.major_limit(p.eps_minor);
+    p.flc_margin = m.margin;
+    p.zone = m.zone;
+  }
+}
+
+const FldPoint* least_margin_point(const std::vector<FldPoint>& points) {
+  const FldPoint* least = nullptr;
+  for (const FldPoint& p : points) {
+    if (std::isnan(p.flc_margin)) continue;
+    if (least == nullptr || p.flc_margin < least->flc_margin) least = &p;
+  }
+  return least;
+}
+
 std::string fld_points_csv(const std::vector<FldPoint>& points) {
   std::string out =
-      "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective\n";
+      "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,thinning_percent,"
+      "eps_effective,flc_eps_major,flc_margin,flc_zone\n";
   for (const FldPoint& p : points) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", p.element, format_number(p.x0_mm),
-                       format_number(p.y0_mm), format_number(p.r0_mm), format_number(p.r_mm),
-                       format_number(p.eps_major), format_number(p.eps_minor),
-                       format_number(p.eps_thickness), format_number(p.eps_effective));
+    out += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.element, format_number(p.x0_mm),
+        format_number(p.y0_mm), format_number(p.r0_mm), format_number(p.r_mm),
+        format_number(p.eps_major), format_number(p.eps_minor), format_number(p.eps_thickness),
+        format_number(p.thinning_percent), format_number(p.eps_effective),
+        format_number(p.flc_eps_major), format_number(p.flc_margin), forming_zone_name(p.zone));
   }
   return out;
 }

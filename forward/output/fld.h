@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "output/forming_limit.h"
 #include "run/run_result.h"
 
 namespace vs {
@@ -35,16 +36,29 @@ struct FldPoint {
   double x0_mm = 0.0, y0_mm = 0.0, r0_mm = 0.0;  // initial position of the element centre
   double r_mm = 0.0;                             // its current distance from the punch axis
   double eps_major = 0.0, eps_minor = 0.0, eps_thickness = 0.0, eps_effective = 0.0;
+  double thinning_percent = 0.0;  // 100 (1 - h/h0) = -100 expm1(eps_thickness)
+  // Against the forming-limit curve (apply_forming_limit; NaN / kUnknown without one):
+  double flc_eps_major = 0.0;  // major true strain of the FLC at this minor strain
+  double flc_margin = 0.0;     // flc_eps_major - eps_major
+  FormingZone zone = FormingZone::kUnknown;
 };
 
 // Every element at the final state (3D: the last stage of result.shell); empty when the result
-// has no state.
+// has no state. The FLC fields are unset (NaN, kUnknown) until apply_forming_limit.
 std::vector<FldPoint> fld_points(const RunResult& result);
 // The points of one axisymmetric state (empty for null).
 std::vector<FldPoint> fld_points(const Profile* state);
 
-// element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective, one row per
-// point (only the header when there are none).
+// Fills the FLC fields of every point from `flc`.
+void apply_forming_limit(const FormingLimitCurve& flc, std::vector<FldPoint>* points);
+
+// The point with the smallest FLC margin (the first of equal ones), or nullptr when no point has
+// a margin (no curve, no points).
+const FldPoint* least_margin_point(const std::vector<FldPoint>& points);
+
+// element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,thinning_percent,
+// eps_effective,flc_eps_major,flc_margin,flc_zone, one row per point (only the header when there
+// are none); flc_zone is safe / marginal / failed, or none without a curve.
 std::string fld_points_csv(const std::vector<FldPoint>& points);
 
 // Elements whose strain paths are worth plotting: the thinnest element of `state` and up to

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "output/number_format.h"
@@ -19,6 +20,8 @@ std::string cell(const std::vector<int>& v, std::size_t i) {
 }
 
 }  // namespace
+
+double thinning_percent(double eps_thickness) { return -100.0 * std::expm1(eps_thickness); }
 
 std::string strains_file_name(double punch_travel_mm, const std::string& line) {
   if (line == "meridian") return fmt::format("strains_travel_{:06.2f}mm.csv", punch_travel_mm);
@@ -53,12 +56,15 @@ std::string profile_csv(const Profile& p) {
   out += p.line == "meridian" ? std::string("\n") : fmt::format(", line={}\n", p.line);
   out +=
       "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
-      "eps_effective,contact\n";
+      "thinning_percent,eps_effective,contact\n";
   const std::size_t n = profile_rows(p);
   for (std::size_t i = 0; i < n; ++i) {
-    out += fmt::format("{},{},{},{},{},{},{},{},{}\n", cell(p.r0_mm, i), cell(p.r_mm, i),
+    const std::string thinning = i < p.eps_thickness.size()
+                                     ? format_number(thinning_percent(p.eps_thickness[i]))
+                                     : std::string("nan");
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", cell(p.r0_mm, i), cell(p.r_mm, i),
                        cell(p.z_mm, i), cell(p.thickness_mm, i), cell(p.eps_meridional, i),
-                       cell(p.eps_circumferential, i), cell(p.eps_thickness, i),
+                       cell(p.eps_circumferential, i), cell(p.eps_thickness, i), thinning,
                        cell(p.eps_effective, i), cell(p.contact, i));
   }
   return out;

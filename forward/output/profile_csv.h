@@ -29,9 +29,12 @@ std::vector<const Profile*> profile_stages(const RunResult& result, const std::s
 // The line that plots show: the first profile's ("meridian", or "x" in 3D).
 std::string primary_line(const RunResult& result);
 
+// Thinning in percent, 100 (1 - h/h0), from the thickness strain ln(h/h0) (NaN stays NaN).
+double thinning_percent(double eps_thickness);
+
 // "# punch_travel_mm=<travel>" (and ", line=<line>" for a 3D line), then the header
-// r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,eps_effective,
-// contact, then one row per element (3D: per node of the line).
+// r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,
+// thinning_percent,eps_effective,contact, then one row per element (3D: per node of the line).
 std::string profile_csv(const Profile& profile);
 
 }  // namespace vs

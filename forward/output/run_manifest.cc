@@ -3,12 +3,13 @@
 #include "output/build_info.h"
 #include "output/run_summary.h"
 #include "output/scene_json.h"
+#include "output/suspect_results.h"
 
 namespace vs {
 
 nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                                     const std::vector<std::string>& files) {
-  const RunSummary s = summarize_run(result);
+  const RunSummary s = summarize_run(scene, result);
   nlohmann::ordered_json j;
   j["program"] = {{"name", "vshell"},
                   {"version", program_version()},
@@ -20,7 +21,7 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
   j["dofs"] = result.dofs;
   j["termination"] = s.termination;
   j["message"] = s.message;
-  j["warnings"] = result.warnings;
+  j["warnings"] = s.warnings;
   j["steps"] = s.steps;
   j["total_iterations"] = s.total_iterations;
   j["total_cutbacks"] = s.total_cutbacks;
@@ -35,7 +36,27 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
   j["peak_punch_force_N"] = s.peak_punch_force_N;
   j["punch_travel_at_peak_mm"] = s.punch_travel_at_peak_mm;
   j["final_min_thickness_mm"] = s.final_min_thickness_mm;
+  j["final_thinning_percent"] = s.final_thinning_percent;
   j["final_thinnest_r0_mm"] = s.final_thinnest_r0_mm;
+  j["final_thinnest_x0_mm"] = s.final_thinnest_x0_mm;
+  j["final_thinnest_y0_mm"] = s.final_thinnest_y0_mm;
+  j["forming_limit"] = {{"curve", s.flc_description},
+                        {"smallest_margin", s.flc_min_margin},
+                        {"zone", s.flc_min_zone},
+                        {"element", s.flc_min_element},
+                        {"x0_mm", s.flc_min_x0_mm},
+                        {"y0_mm", s.flc_min_y0_mm},
+                        {"r0_mm", s.flc_min_r0_mm},
+                        {"eps_major", s.flc_min_eps_major},
+                        {"eps_minor", s.flc_min_eps_minor},
+                        {"failed_elements", s.flc_failed_elements},
+                        {"marginal_elements", s.flc_marginal_elements},
+                        {"elements", s.flc_elements}};
+  const LoadCurveNoise noise = load_curve_noise(result.steps);
+  j["load_curve"] = {{"force_increments", noise.increments},
+                     {"slope_reversals", noise.reversals},
+                     {"rms_second_difference_of_peak", noise.rms_second_difference},
+                     {"noise_like", noise.noise_like}};
   j["profiles"] = result.profiles.size();
   j["history_entries"] = result.history.size();
   j["scene"] = scene_to_json(scene);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <string>
@@ -31,7 +33,6 @@ PlotSeries line(const std::string& label, const std::vector<double>& x,
   s.y = y;
   return s;
 }
-
 
 }  // namespace
 
@@ -96,7 +97,7 @@ SvgFigure deformed_stages_figure(const Scene& scene, const RunResult& result) {
 }
 
 SvgFigure fld_figure(const Scene& scene, const RunResult& result,
-                     const std::vector<StrainPath>& paths) {
+                     const std::vector<StrainPath>& paths, const FormingLimitCurve& flc) {
   SvgFigure f;
   f.title = figure_title(scene, result, "forming limit diagram");
   f.x_label = "minor true strain [-]";
@@ -110,6 +111,43 @@ SvgFigure fld_figure(const Scene& scene, const RunResult& result,
     final_points.y.push_back(p.eps_major);
   }
   f.series.push_back(std::move(final_points));
+  if (flc.defined()) {
+    // The curve over the minor strains of the plot, with a quarter of their span to each side
+    // (at least 0.2 in all) so that the branches around plane strain show.
+    double lo = 0.0, hi = 0.0;
+    for (const PlotSeries& s : f.series) {
+      for (double x : s.x) {
+        if (std::isfinite(x)) {
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+      }
+    }
+    for (const StrainPath& path : paths) {
+      for (double x : path.eps_minor) {
+        if (std::isfinite(x)) {
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+      }
+    }
+    const double pad = 0.25 * std::max(hi - lo, 0.2);
+    const FlcPolyline curve = flc_polyline(flc, lo - pad, hi + pad, 0.0);
+    PlotSeries s = line(
+        flc.model == FormingLimitModel::kKeelerBrazier ? "FLC (Keeler-Brazier)" : "FLC (table)",
+        curve.minor, curve.major);
+    s.colour = 6;
+    s.line_width_px = 2.0;
+    f.series.push_back(std::move(s));
+    if (flc.safety_margin > 0.0) {
+      const FlcPolyline band = flc_polyline(flc, lo - pad, hi + pad, flc.safety_margin);
+      PlotSeries m = line(fmt::format("FLC - {:.3g} (safety margin)", flc.safety_margin),
+                          band.minor, band.major);
+      m.colour = 6;
+      m.dashed = true;
+      f.series.push_back(std::move(m));
+    }
+  }
   for (std::size_t k = 0; k < paths.size(); ++k) {
     const StrainPath& path = paths[k];
     PlotSeries s;

@@ -23,8 +23,9 @@ SvgFigure strains_figure(const Scene& scene, const RunResult& result);
 // Deformed meridians (z vs r, equal aspect), one per profile travel.
 SvgFigure deformed_stages_figure(const Scene& scene, const RunResult& result);
 
-// Forming limit diagram: final major vs minor strain of every element, and the strain paths.
+// Forming limit diagram: final major vs minor strain of every element, the strain paths, and the
+// forming-limit curve with the curve lowered by its safety margin (dashed) when there is one.
 SvgFigure fld_figure(const Scene& scene, const RunResult& result,
-                     const std::vector<StrainPath>& paths);
+                     const std::vector<StrainPath>& paths, const FormingLimitCurve& flc = {});
 
 }  // namespace vs

@@ -64,26 +64,33 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
                                           const RunWriterOptions& options) {
   FolderWriter out(directory);
   out.text("load_travel.csv", load_travel_csv(result.steps));
-  out.text("thinnest_point.csv", thinnest_point_csv(result.steps));
+  out.text("thinnest_point.csv", thinnest_point_csv(result.steps, scene.blank.thickness_mm));
+  const FormingLimitCurve flc = forming_limit_curve(scene);
   for (const Profile* p : profile_stages(result)) {
     out.text(unique_strains_name(out, *p), profile_csv(*p));
   }
   if (result.shell) {
     // ParaView series: each output stage once (the final state often repeats the last one).
+    // stage_0 is the state at zero travel when the run reached it.
     const ShellFields& shell = *result.shell;
+    std::vector<const ShellStage*> stages;
+    if (!shell.initial.x.empty()) stages.push_back(&shell.initial);
+    for (const ShellStage& st : shell.stages) stages.push_back(&st);
     std::vector<PvdEntry> series;
-    for (std::size_t k = 0; k < shell.stages.size(); ++k) {
-      const ShellStage& st = shell.stages[k];
-      if (k > 0 && st.punch_travel_mm == shell.stages[k - 1].punch_travel_mm) continue;
+    for (std::size_t k = 0; k < stages.size(); ++k) {
+      const ShellStage& st = *stages[k];
+      if (k > 0 && st.punch_travel_mm == stages[k - 1]->punch_travel_mm) continue;
       const std::string vtu = fmt::format("stage_{}.vtu", series.size());
-      out.text(vtu, stage_vtu(shell.mesh, st, scene.blank.thickness_mm));
+      out.text(vtu, stage_vtu(shell.mesh, st, scene.blank.thickness_mm, flc));
       series.push_back({st.punch_travel_mm, vtu});
     }
     out.text("stages.pvd", render_pvd(series));
   }
 
   const Profile* state = final_state(result);
-  out.text("fld_points.csv", fld_points_csv(fld_points(result)));
+  std::vector<FldPoint> points = fld_points(result);
+  apply_forming_limit(flc, &points);
+  out.text("fld_points.csv", fld_points_csv(points));
   std::vector<StrainPath> paths;
   if (state != nullptr && !result.history.empty()) {
     paths = strain_paths(result, strain_path_elements(*state, options.strain_path_elements));
@@ -95,7 +102,7 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
     out.svg("thickness_strain.svg", thickness_strain_figure(scene, result));
     out.svg("strains.svg", strains_figure(scene, result));
     out.svg("deformed_stages.svg", deformed_stages_figure(scene, result));
-    out.svg("fld.svg", fld_figure(scene, result, paths));
+    out.svg("fld.svg", fld_figure(scene, result, paths, flc));
   }
 
   std::vector<std::string> files = out.written();

@@ -5,7 +5,8 @@
 //   strains_travel_<travel>mm_<line>.csv         per profile of a 3D run (lines x, y, diagonal;
 //                                                a full blank adds x_neg, y_neg, diagonal_neg)
 //   fld_points.csv, strain_paths.csv             forming limit diagram data
-//   stage_<k>.vtu, stages.pvd                    3D: ParaView series of the output stages
+//   stage_<k>.vtu, stages.pvd                    3D: ParaView series: zero travel (stage_0),
+//                                                the output stages and the end
 //   load_travel.svg, thickness_strain.svg, strains.svg, deformed_stages.svg, fld.svg
 //                                                if scene.output.plots
 //   run.json                                     manifest (written last, lists all the above)

@@ -41,6 +41,18 @@ const char* name(HardeningLaw law) {
   return "unknown";
 }
 
+const char* name(FormingLimitModel model) {
+  switch (model) {
+    case FormingLimitModel::kKeelerBrazier:
+      return "keeler-brazier";
+    case FormingLimitModel::kTable:
+      return "table";
+    case FormingLimitModel::kNone:
+      return "none";
+  }
+  return "unknown";
+}
+
 const char* name(RateLaw law) {
   switch (law) {
     case RateLaw::kNone:
@@ -162,6 +174,12 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                    {"strain_rate_cutoff", n.strain_rate_cutoff},
                    {"friction_regularisation", n.friction_regularisation},
                    {"max_cutbacks", n.max_cutbacks}};
+
+  const FormingLimitSpec& fl = s.forming_limit;
+  j["forming_limit"] = {{"model", name(fl.model)},
+                        {"table_minor", fl.table_minor},
+                        {"table_major", fl.table_major},
+                        {"safety_margin", fl.safety_margin}};
 
   j["output"] = {
       {"directory", s.output.directory}, {"plots", s.output.plots}, {"history", s.output.history}};

@@ -29,12 +29,14 @@ std::string load_travel_csv(const std::vector<StepRecord>& steps) {
   return out;
 }
 
-std::string thinnest_point_csv(const std::vector<StepRecord>& steps) {
-  std::string out = "punch_travel_mm,min_thickness_mm,thinnest_r0_mm,thinnest_r_mm\n";
+std::string thinnest_point_csv(const std::vector<StepRecord>& steps, double initial_thickness_mm) {
+  std::string out =
+      "punch_travel_mm,min_thickness_mm,thinning_percent,thinnest_r0_mm,thinnest_r_mm\n";
   for (const StepRecord& r : steps) {
-    out += fmt::format("{},{},{},{}\n", format_number(r.punch_travel_mm),
-                       format_number(r.min_thickness_mm), format_number(r.thinnest_r0_mm),
-                       format_number(r.thinnest_r_mm));
+    out += fmt::format("{},{},{},{},{}\n", format_number(r.punch_travel_mm),
+                       format_number(r.min_thickness_mm),
+                       format_number(100.0 * (1.0 - r.min_thickness_mm / initial_thickness_mm)),
+                       format_number(r.thinnest_r0_mm), format_number(r.thinnest_r_mm));
   }
   return out;
 }

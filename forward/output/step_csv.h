@@ -19,7 +19,8 @@ std::string load_travel_csv_row(const StepRecord& record);
 // Header and one row per step, each line ending in "\n".
 std::string load_travel_csv(const std::vector<StepRecord>& steps);
 
-// punch_travel_mm,min_thickness_mm,thinnest_r0_mm,thinnest_r_mm per step.
-std::string thinnest_point_csv(const std::vector<StepRecord>& steps);
+// punch_travel_mm,min_thickness_mm,thinning_percent,thinnest_r0_mm,thinnest_r_mm per step;
+// thinning_percent = 100 (1 - min_thickness_mm / initial_thickness_mm).
+std::string thinnest_point_csv(const std::vector<StepRecord>& steps, double initial_thickness_mm);
 
 }  // namespace vs

@@ -21,6 +21,41 @@ constexpr double kBottom = 56.0;
 constexpr double kLegendRow = 18.0;
 constexpr double kCharWidth = 7.0;  // rough width of a 12 px sans-serif character
 constexpr int kTargetTicks = 6;
+constexpr double kTitleMarginPx = 8.0;  // free space left and right of the title
+constexpr double kCharWidthPerFontPx = 0.6;
+
+// Greedy word wrap into lines of at most `max_chars` characters; a word longer than a line is
+// broken inside.
+std::vector<std::string> wrap_words(std::string_view text, std::size_t max_chars) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    while (pos < text.size() && text[pos] == ' ') ++pos;
+    if (pos >= text.size()) break;
+    std::size_t end = text.find(' ', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view word = text.substr(pos, end - pos);
+    pos = end;
+    while (!word.empty()) {
+      const std::size_t room =
+          line.empty() ? max_chars : max_chars - std::min(max_chars, line.size() + 1);
+      if (word.size() <= room) {
+        if (!line.empty()) line += ' ';
+        line += word;
+        word = {};
+      } else if (!line.empty()) {
+        lines.push_back(line);
+        line.clear();
+      } else {
+        lines.emplace_back(word.substr(0, max_chars));
+        word.remove_prefix(max_chars);
+      }
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  return lines;
+}
 
 // Coordinates with two decimals: a hundredth of a pixel is invisible and keeps files stable.
 std::string px(double value) {
@@ -325,6 +360,30 @@ std::string xml_escape(std::string_view text) {
   return out;
 }
 
+double estimated_text_width(std::string_view text, double font_px) {
+  return kCharWidthPerFontPx * font_px * static_cast<double>(text.size());
+}
+
+TitleLayout layout_title(std::string_view title, double width_px) {
+  TitleLayout layout;
+  const double room = std::max(width_px - 2.0 * kTitleMarginPx, 1.0);
+  for (double font = 15.0; font >= 9.0; font -= 1.0) {
+    const auto max_chars =
+        static_cast<std::size_t>(std::max(1.0, std::floor(room / (kCharWidthPerFontPx * font))));
+    layout.font_px = font;
+    layout.lines = wrap_words(title, max_chars);
+    if (layout.lines.size() <= 2) return layout;
+  }
+  // Still more than two lines at the smallest size: keep two, the second cut with "...".
+  const auto max_chars = static_cast<std::size_t>(
+      std::max(4.0, std::floor(room / (kCharWidthPerFontPx * layout.font_px))));
+  std::string second = layout.lines[1];
+  for (std::size_t k = 2; k < layout.lines.size(); ++k) second += ' ' + layout.lines[k];
+  layout.lines.resize(2);
+  layout.lines[1] = second.substr(0, max_chars - 3) + "...";
+  return layout;
+}
+
 std::string render_svg(const SvgFigure& figure) {
   std::size_t legend_entries = 0;
   std::size_t longest_label = 0;
@@ -359,9 +418,21 @@ std::string render_svg(const SvgFigure& figure) {
   out += '\n';
   out += R"svg(<rect width="100%" height="100%" fill="#ffffff"/>)svg";
   out += '\n';
-  out += fmt::format(R"svg(<text x="{}" y="26" font-size="15" text-anchor="middle">{}</text>)svg",
-                     px(frame.left + 0.5 * frame.width), xml_escape(figure.title));
-  out += '\n';
+  // Each title line is centred over the plot frame, moved towards the figure's centre as far as
+  // needed to keep it inside the figure.
+  const TitleLayout title = layout_title(figure.title, width);
+  const double line_px = 1.15 * title.font_px;
+  double baseline = title.lines.size() > 1 ? 6.0 + title.font_px : 26.0;
+  for (const std::string& line : title.lines) {
+    const double half = 0.5 * estimated_text_width(line, title.font_px);
+    const double lo = kTitleMarginPx + half, hi = width - kTitleMarginPx - half;
+    const double centre =
+        lo <= hi ? std::clamp(frame.left + 0.5 * frame.width, lo, hi) : 0.5 * width;
+    out += fmt::format(R"svg(<text x="{}" y="{}" font-size="{}" text-anchor="middle">{}</text>)svg",
+                       px(centre), px(baseline), title.font_px, xml_escape(line));
+    out += '\n';
+    baseline += line_px;
+  }
   append_axes(out, figure, frame);
   // Data outside a fixed range is clipped to the plot area rather than drawn over the labels.
   out += "<g>\n";

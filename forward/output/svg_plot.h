@@ -53,6 +53,19 @@ const std::vector<std::string>& plot_palette();
 // Escapes & < > " ' for text and attribute values.
 std::string xml_escape(std::string_view text);
 
+// The title of a figure `width_px` wide, laid out so that no line runs off either side: wrapped
+// at spaces into at most two lines at 15 px; a title that still does not fit is set smaller
+// (down to 9 px), and only beyond that its second line is cut with "...". Widths are estimated
+// at 0.6 font sizes per character (wider than the average sans-serif character).
+struct TitleLayout {
+  double font_px = 15.0;
+  std::vector<std::string> lines;  // empty for an empty title
+};
+TitleLayout layout_title(std::string_view title, double width_px);
+
+// Estimated width of `text` set at `font_px` (the rule of layout_title).
+double estimated_text_width(std::string_view text, double font_px);
+
 // The SVG document for `figure`.
 std::string render_svg(const SvgFigure& figure);
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
 #include "mesh/shell_mesh.h"
+#include "scene/scene.h"
 
 namespace vs {
 
@@ -82,12 +82,20 @@ struct ShellStage {
   std::vector<double> thickness_mm;   // per node
   std::vector<int> contact_tool;      // per node: tool index, -1 free
   std::vector<double> eps_effective;  // per element: mean over its mid-thickness flow points
+  // Per element, mean over its mid-thickness flow points of the effective (Hill) stress of the
+  // viscous law at the point's accumulated strain and current effective rate [MPa]: the flow
+  // stress where the sheet deforms, less in the nearly rigid regions (rate cut-off).
+  std::vector<double> effective_stress_MPa;
 };
 
-// What only a 3D run has: its initial mesh and the sheet at the output travels and at the end.
+// What only a 3D run has: its initial mesh, the sheet at zero travel and at the output travels
+// and the end.
 struct ShellFields {
   shell3d::ShellMesh mesh;  // the meshed part: quarter or full blank
-  std::vector<ShellStage> stages;
+  // The first converged state, at zero travel (the initial blank with its first flow; empty x
+  // when the run failed before it).
+  ShellStage initial;
+  std::vector<ShellStage> stages;  // at the output travels reached, then the end
 };
 
 struct RunResult {

@@ -157,6 +157,22 @@ struct NumericsSpec {
   ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
 };
 
+// Forming-limit curve (FLC) of the forming-limit diagram: outputs only (fld.svg, the margin per
+// element in fld_points.csv and the 3D stages, run.json); the solver never reads it. Strains are
+// true (logarithmic) strains, as in the FLD (output/forming_limit.h).
+enum class FormingLimitModel {
+  kKeelerBrazier,  // from the hardening exponent n and the thickness
+  kTable,          // the user's points
+  kNone,           // no curve
+};
+
+struct FormingLimitSpec {
+  FormingLimitModel model = FormingLimitModel::kKeelerBrazier;
+  std::vector<double> table_minor;  // kTable: minor true strain, strictly increasing
+  std::vector<double> table_major;  // kTable: major true strain on the curve, > 0
+  double safety_margin = 0.1;       // major true strain below the FLC counted as marginal
+};
+
 struct OutputSpec {
   std::string directory = "out";  // relative to the current working directory
   bool plots = true;              // write SVG plots
@@ -172,6 +188,7 @@ struct Scene {
   std::vector<ToolSpec> tools;
   ProcessSpec process;
   NumericsSpec numerics;
+  FormingLimitSpec forming_limit;
   OutputSpec output;
 };
 

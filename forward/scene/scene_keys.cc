@@ -21,6 +21,7 @@ RateSpec& rate(Scene& s, ToolSpec&) { return s.material.rate; }
 ToolSpec& tool(Scene&, ToolSpec& t) { return t; }
 ProcessSpec& process(Scene& s, ToolSpec&) { return s.process; }
 NumericsSpec& numerics(Scene& s, ToolSpec&) { return s.numerics; }
+FormingLimitSpec& forming_limit(Scene& s, ToolSpec&) { return s.forming_limit; }
 OutputSpec& output(Scene& s, ToolSpec&) { return s.output; }
 
 template <auto kSection, auto kMember>
@@ -341,6 +342,29 @@ std::vector<KeySpec> build_keys() {
              "the paper's selective rule (in-plane 3x3, transverse shear 2x2)."))
       .geometry = "shell3d";
 
+  // [forming_limit]
+  const std::string_view fl = "forming_limit";
+  add(choice(fl, "model", enum_field<&forming_limit, &FormingLimitSpec::model>(),
+             {"keeler-brazier", "table", "none"},
+             "Forming-limit curve drawn on the FLD and measured against by the margin of every "
+             "element (outputs only). keeler-brazier: FLC0 = (23.3 + 14.13 t) n / 0.21 % "
+             "engineering major strain (t = blank thickness in mm, fitted for t <= 3 mm; n = "
+             "material.hardening.n for swift/hollomon, the slope of ln sigma over ln eps between "
+             "0.1 and 0.2 strain for voce/table), left branch at constant thickness strain, right "
+             "branch rising 0.6 x the engineering minor strain (see 'Forming-limit curve'); "
+             "table: the points below; none: no curve."));
+  add(make(fl, "points", KeyType::kPairArray, KeyField{}, "[-, -]", Range{},
+           "The curve as [[minor_true_strain, major_true_strain], ...]: 2 to 100 points, minor "
+           "strictly increasing in [-1, 1], major in (0, 2]; linear between points, constant "
+           "beyond the ends."))
+      .applies_to = {"table"};
+  keys.back().required = true;
+  add(make(fl, "safety_margin", kFloat,
+           float_field<&forming_limit, &FormingLimitSpec::safety_margin>(), "", closed(0, 1),
+           "Band below the FLC, in major true strain, whose elements are 'marginal' (at or above "
+           "the FLC: 'failed'; below the band: 'safe'). 0.1 is about the 10 % engineering major "
+           "strain rule of thumb for steel (8 % for aluminium)."));
+
   // [output]
   add(make("output", "directory", KeyType::kString, string_field<&output, &OutputSpec::directory>(),
            "", Range{}, "Run directory, relative to the current working directory."));
@@ -396,6 +420,9 @@ const std::vector<SectionSpec>& scene_sections() {
       {"tool", "[[tool]]", "Rigid tools, one table each; the keys allowed depend on `kind`."},
       {"process", "[process]", "Punch motion and output stages."},
       {"numerics", "[numerics]", "Integration, nonlinear solver and step control."},
+      {"forming_limit", "[forming_limit]",
+       "Forming-limit curve for the FLD and the margin of every element (outputs only); the "
+       "keys allowed depend on `model`."},
       {"output", "[output]", "What is written where."},
   };
   return sections;
@@ -413,6 +440,7 @@ const VariantSelector* find_selector(std::string_view section) {
       {"material.hardening", "law", "hardening law"},
       {"material.rate", "law", "rate law"},
       {"tool", "kind", "tool kind"},
+      {"forming_limit", "model", "forming limit model"},
   };
   for (const VariantSelector& s : selectors) {
     if (s.section == section) return &s;

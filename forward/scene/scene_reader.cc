@@ -70,6 +70,8 @@ class SceneReader {
         read_tools(*e.node);
       } else if (name == "material") {
         read_material(as_table(*e.node, name));
+      } else if (name == "forming_limit") {
+        read_forming_limit(as_table(*e.node, name));
       } else if (name != "title" && name != "geometry") {
         read_keys(as_table(*e.node, name), name, fmt::format("in [{}]", name), name, no_tool_, {});
       }
@@ -79,7 +81,7 @@ class SceneReader {
 
  private:
   static inline const std::vector<std::string_view> kTopSections = {
-      "blank", "material", "tool", "process", "numerics", "output"};
+      "blank", "material", "tool", "process", "numerics", "forming_limit", "output"};
 
   const toml::table& as_table(const toml::node& node, const std::string& address) const {
     if (!node.is_table()) {
@@ -208,6 +210,51 @@ class SceneReader {
       fail_at(where_.source(), node.source(), fmt::format("{}: {}", address, problem));
     }
     return curve;
+  }
+
+  void read_forming_limit(const toml::table& table) {
+    read_keys(table, "forming_limit", "in [forming_limit]", "forming_limit", no_tool_, {});
+    if (scene_.forming_limit.model != FormingLimitModel::kTable) return;
+    const std::string address = "forming_limit.points";
+    const toml::node& node = *table.get("points");  // required: read_keys checked it is there
+    const toml::array* rows = node.as_array();
+    if (rows == nullptr) {
+      fail_at(where_.source(), node.source(),
+              fmt::format("{}: expected [[minor_true_strain, major_true_strain], ...], got {}",
+                          address, toml_type_name(node)));
+    }
+    constexpr std::size_t kMaxPoints = 100;
+    if (rows->size() < 2 || rows->size() > kMaxPoints) {
+      fail_at(where_.source(), node.source(),
+              fmt::format("{} has {} points; give 2 to {}", address, rows->size(), kMaxPoints));
+    }
+    FormingLimitSpec& flc = scene_.forming_limit;
+    for (std::size_t i = 0; i < rows->size(); ++i) {
+      const toml::node& row = *rows->get(i);
+      const std::string row_address = fmt::format("{}[{}]", address, i);
+      const toml::array* pair = row.as_array();
+      if (pair == nullptr || pair->size() != 2) {
+        fail_at(
+            where_.source(), row.source(),
+            fmt::format("{}: expected a pair [minor_true_strain, major_true_strain]", row_address));
+      }
+      const double minor = read_number(*pair->get(0), row_address, where_.source());
+      const double major = read_number(*pair->get(1), row_address, where_.source());
+      std::string problem;
+      if (!(minor >= -1.0 && minor <= 1.0)) {
+        problem = fmt::format("minor strain {} is outside [-1, 1]", minor);
+      } else if (!(major > 0.0 && major <= 2.0)) {
+        problem = fmt::format("major strain {} is outside (0, 2]", major);
+      } else if (!flc.table_minor.empty() && !(minor > flc.table_minor.back())) {
+        problem = fmt::format("minor strain {} does not increase (previous point: {})", minor,
+                              flc.table_minor.back());
+      }
+      if (!problem.empty()) {
+        fail_at(where_.source(), row.source(), fmt::format("{}: {}", row_address, problem));
+      }
+      flc.table_minor.push_back(minor);
+      flc.table_major.push_back(major);
+    }
   }
 
   FlowCurveTable read_curve_file(const toml::node& node) const {

@@ -438,8 +438,7 @@ bool AxisymStepper::update_thickness(AxisymState& s, std::string* why) const {
           "outside [{}, {}] x initial: {}",
           e, model_.initial_mid_radius(e), h, h / h0, driver_.min_thickness_ratio,
           driver_.max_thickness_ratio,
-          h < driver_.min_thickness_ratio * h0 ? "the sheet has necked through (fracture)"
-                                               : "the mesh is folding onto itself");
+          thickness_limit_reason(h, h0, driver_, shortest_element_mm(), "elements"));
       return false;
     }
     s.thickness[e] = h;

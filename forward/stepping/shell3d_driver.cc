@@ -139,10 +139,12 @@ class Shell3dStepper {
   const std::vector<double>& eps_bar(const FormingState& s) const { return s.eps_bar; }
   StepRecord record(const Solved& s) const;
   void output(const Solved& s, double /*travel*/, RunResult* /*result*/) {
-    fields_->stages.push_back(stage(s.state));
+    fields_->stages.push_back(stage(s));
   }
   void history(const Solved& /*s*/, double /*travel*/, RunResult* /*result*/) const {}
-  void observe(const Solved& /*s*/) const {}
+  void observe(const Solved& s) {
+    if (fields_->initial.x.empty()) fields_->initial = stage(s);  // zero travel
+  }
   void start(RunResult* result) const;
   void finish(RunResult* result) const;
 
@@ -151,7 +153,7 @@ class Shell3dStepper {
   double travel(const FormingState& s) const {
     return s.time_s * scene_.process.punch_speed_mm_per_s;
   }
-  ShellStage stage(const FormingState& s) const;
+  ShellStage stage(const Solved& solved) const;
 
   const Scene& scene_;
   RunOptions options_;
@@ -359,8 +361,7 @@ bool Shell3dStepper::update_thickness(FormingState& s, std::string* why) const {
           "node {} (initial position x {:.3g}, y {:.3g} mm) reached thickness {:.3g} mm = {:.3g} "
           "x initial, outside [{}, {}] x initial: {}",
           i, p.x(), p.y(), h, h / h0, driver_.min_thickness_ratio, driver_.max_thickness_ratio,
-          h < driver_.min_thickness_ratio * h0 ? "the sheet has necked through (fracture)"
-                                               : "the mesh is folding onto itself");
+          thickness_limit_reason(h, h0, driver_, shortest_element_mm(), "divisions"));
       return false;
     }
     s.thickness[i] = h;
@@ -433,7 +434,8 @@ StepRecord Shell3dStepper::record(const Solved& cur) const {
   return rec;
 }
 
-ShellStage Shell3dStepper::stage(const FormingState& s) const {
+ShellStage Shell3dStepper::stage(const Solved& solved) const {
+  const FormingState& s = solved.state;
   ShellStage st;
   st.punch_travel_mm = travel(s);
   st.x = s.x;
@@ -442,11 +444,21 @@ ShellStage Shell3dStepper::stage(const FormingState& s) const {
   for (std::size_t i = 0; i < s.contact.size(); ++i) st.contact_tool[i] = s.contact[i].tool;
   const int fp = model_.flow_points(), nt = model_.thickness_points(), nip = fp / nt;
   st.eps_effective.assign(model_.num_elements(), 0.0);
+  st.effective_stress_MPa.assign(model_.num_elements(), 0.0);
   for (int e = 0; e < model_.num_elements(); ++e) {
-    double sum = 0.0;
-    for (int ip = 0; ip < nip; ++ip)
-      sum += s.eps_bar[static_cast<std::size_t>(e * fp + ip * nt + nt / 2)];
+    double sum = 0.0, stress = 0.0;
+    for (int ip = 0; ip < nip; ++ip) {
+      const int k = ip * nt + nt / 2;
+      const double eps_bar = s.eps_bar[static_cast<std::size_t>(e * fp + k)];
+      sum += eps_bar;
+      const double rate =
+          static_cast<std::size_t>(e) < solved.point_rates.size()
+              ? solved.point_rates[static_cast<std::size_t>(e)][static_cast<std::size_t>(k)]
+              : 0.0;
+      stress += model_.law().effective_stress(model_.hardening().flow_stress(eps_bar), rate);
+    }
     st.eps_effective[e] = sum / nip;
+    st.effective_stress_MPa[e] = stress / nip;
   }
   return st;
 }

@@ -1,5 +1,7 @@
 #include "stepping/step_driver_options.h"
 
+#include <fmt/format.h>
+
 namespace vs {
 
 bool StepDriverOptions::IsValid(std::string* why) const {
@@ -24,6 +26,18 @@ bool StepDriverOptions::IsValid(std::string* why) const {
     return fail("thickness ratios must bracket 1");
   if (implicit_solves < 1) return fail("implicit_solves must be at least 1");
   return true;
+}
+
+std::string thickness_limit_reason(double h, double h0, const StepDriverOptions& options,
+                                   double shortest_element_mm, const char* fewer_what) {
+  if (h >= options.min_thickness_ratio * h0) return "the mesh is folding onto itself";
+  if (shortest_element_mm < h0) {
+    return fmt::format(
+        "the sub-thickness-mesh instability, not a resolved neck (elements as short as {:.3g} mm, "
+        "shorter than the thickness {:.3g} mm; use fewer {})",
+        shortest_element_mm, h0, fewer_what);
+  }
+  return "the sheet has necked through (fracture)";
 }
 
 }  // namespace vs

@@ -56,4 +56,11 @@ struct StepDriverOptions {
   bool IsValid(std::string* why) const;
 };
 
+// Why a thickness h outside the limits of `options` (relative to h0) stops a run: "the mesh is
+// folding onto itself" above them; below them "the sheet has necked through (fracture)", unless
+// the mesh has elements shorter than the thickness (shortest_element_mm < h0, the case the run
+// warned about at its start): then it is the sub-thickness-mesh instability, not a resolved neck.
+std::string thickness_limit_reason(double h, double h0, const StepDriverOptions& options,
+                                   double shortest_element_mm, const char* fewer_what);
+
 }  // namespace vs

@@ -121,11 +121,12 @@ TEST(Measurement, ReadsVshellOutputFilesAsWritten) {
   ASSERT_EQ(load.x.size(), 2u);
   EXPECT_EQ(load.x[1], 0.02959);
   EXPECT_EQ(load.y[1], 202.364123);
-  write_file(dir / "strains_travel_010.00mm.csv",
+  write_file(dir / "strains_travel_010.00mm.csv",  // with thinning_percent (since Nov 2026)
              "# punch_travel_mm=10\n"
              "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
-             "eps_effective,contact\n"
-             "0.5,0.6,10,0.8,0.05,0.04,-0.09,0.09,1\n1.5,1.7,9.9,0.81,0.05,0.03,-0.08,0.08,1\n");
+             "thinning_percent,eps_effective,contact\n"
+             "0.5,0.6,10,0.8,0.05,0.04,-0.09,8.6,0.09,1\n"
+             "1.5,1.7,9.9,0.81,0.05,0.03,-0.08,7.7,0.08,1\n");
   const Measurement thick = read_measurement_csv((dir / "strains_travel_010.00mm.csv").string(),
                                                  MeasurementKind::kThicknessStrain);
   EXPECT_EQ(thick.travel_mm, 10.0);

@@ -36,8 +36,11 @@ TEST(Fld, PointsCsvHasEveryElement) {
   // One schema for both geometries (x0, y0: initial centre; an axisymmetric element sits on the
   // x axis at its initial radius).
   EXPECT_EQ(lines[0],
-            "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,eps_effective");
-  EXPECT_EQ(lines[2].substr(0, lines[2].rfind(',')), "1,15,0,15,15.3,0.2,0.05,-0.25");
+            "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,thinning_percent,"
+            "eps_effective,flc_eps_major,flc_margin,flc_zone");
+  // Thinning 100 (1 - exp(-0.25)) = 22.1199217 %; no curve applied: nan margins, zone none.
+  EXPECT_EQ(lines[2].substr(0, 40), "1,15,0,15,15.3,0.2,0.05,-0.25,22.1199217");
+  EXPECT_EQ(lines[2].substr(lines[2].size() - 13), ",nan,nan,none");
   EXPECT_EQ(test::lines(fld_points_csv(fld_points(nullptr))).size(), 1u);
 }
 
@@ -81,7 +84,7 @@ TEST(ProfileCsv, StableNamesAndPaddedPartialFields) {
   EXPECT_EQ(lines[0], "# punch_travel_mm=1");
   EXPECT_EQ(lines[1],
             "r0_mm,r_mm,z_mm,thickness_mm,eps_meridional,eps_circumferential,eps_thickness,"
-            "eps_effective,contact");
+            "thinning_percent,eps_effective,contact");
   EXPECT_EQ(lines[2].substr(0, 12), "5,5.2,1,0.90");
   EXPECT_EQ(lines[2].substr(lines[2].size() - 2), ",1");
   EXPECT_EQ(lines[5].substr(lines[5].size() - 4), ",nan");

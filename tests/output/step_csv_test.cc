@@ -39,10 +39,12 @@ TEST(LoadTravelCsv, RowHasOneCellPerHeaderColumn) {
 
 TEST(ThinnestPointCsv, OneRowPerStep) {
   const std::vector<std::string> lines =
-      test::lines(thinnest_point_csv({test::step_record(1, 0.5, 10.0, 0.99)}));
+      test::lines(thinnest_point_csv({test::step_record(1, 0.5, 10.0, 0.99)}, 1.1));
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0], "punch_travel_mm,min_thickness_mm,thinnest_r0_mm,thinnest_r_mm");
-  EXPECT_EQ(lines[1], "0.5,0.99,5,5.5");
+  EXPECT_EQ(lines[0],
+            "punch_travel_mm,min_thickness_mm,thinning_percent,thinnest_r0_mm,thinnest_r_mm");
+  // 100 (1 - 0.99 / 1.1) = 10 %.
+  EXPECT_EQ(lines[1], "0.5,0.99,10,5,5.5");
 }
 
 TEST(LoadTravelStream, EveryRowIsOnDiskBeforeTheNextStep) {

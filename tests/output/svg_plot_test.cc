@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "output/plot_ticks.h"
 
@@ -201,6 +202,84 @@ TEST(SvgPlot, FixedRangeIsKeptAndLinesAreClippedToIt) {
     EXPECT_LE(p[i + 1], 44.0 + 380.0);
   }
   EXPECT_DOUBLE_EQ(p[5], 44.0);  // leaves through the top
+}
+
+// Title lines as (x, font size, text), from the <text ... font-size="F" text-anchor="middle">
+// elements at the top of the figure (y < 44, above the plot frame).
+struct TitleLine {
+  double x = 0.0, font = 0.0;
+  std::string text;
+};
+std::vector<TitleLine> title_lines(const std::string& svg) {
+  std::vector<TitleLine> lines;
+  for (std::size_t pos = svg.find("<text x=\""); pos != std::string::npos;
+       pos = svg.find("<text x=\"", pos + 1)) {
+    const std::size_t end = svg.find("</text>", pos);
+    const std::string element = svg.substr(pos, end - pos);
+    const double y = std::stod(element.substr(element.find(" y=\"") + 4));
+    if (y >= 44.0 || element.find("text-anchor=\"middle\"") == std::string::npos) continue;
+    TitleLine line;
+    line.x = std::stod(element.substr(9));
+    line.font = std::stod(element.substr(element.find("font-size=\"") + 11));
+    line.text = element.substr(element.find('>') + 1);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+TEST(SvgPlot, ShortTitleIsOneLineAtFullSize) {
+  SvgFigure f = sample_figure();
+  f.title = "ex1: punch force";
+  const std::vector<TitleLine> lines = title_lines(render_svg(f));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].text, "ex1: punch force");
+  EXPECT_EQ(lines[0].font, 15.0);
+}
+
+TEST(SvgPlot, LongTitlesStayInsideTheFigure) {
+  // Before: one line centred over the plot frame; a 150-character title started at x < 0.
+  const std::string words =
+      "Paper example 1, hemispherical stretching of a pinned blank on the Ghosh-Hecker geometry "
+      "with Coulomb friction 0.2 and a Swift steel: forming limit diagram";
+  for (const std::string& title :
+       {words, words + " " + words + " " + words, std::string(300, 'x')}) {
+    SvgFigure f = sample_figure();
+    f.title = title;
+    const std::string svg = render_svg(f);
+    const double width = std::stod(svg.substr(svg.find("width=\"") + 7));
+    const std::vector<TitleLine> lines = title_lines(svg);
+    ASSERT_GE(lines.size(), 1u) << title;
+    ASSERT_LE(lines.size(), 2u) << title;
+    std::string joined;
+    for (const TitleLine& line : lines) {
+      const double half = 0.5 * estimated_text_width(line.text, line.font);
+      EXPECT_GE(line.x - half, 0.0) << line.text;
+      EXPECT_LE(line.x + half, width) << line.text;
+      EXPECT_GE(line.font, 9.0);
+      joined += (joined.empty() ? "" : " ") + line.text;
+    }
+    if (title == words) {
+      EXPECT_EQ(joined, words);  // wrapped, nothing lost
+    }
+  }
+}
+
+TEST(SvgPlot, TitleLayoutWrapsThenShrinksThenCuts) {
+  const TitleLayout one = layout_title("a b c", 720.0);
+  EXPECT_EQ(one.lines, std::vector<std::string>{"a b c"});
+  // 704 px at 0.6 x 15 px per character: 78 characters a line.
+  const std::string two_lines = std::string(70, 'a') + " " + std::string(70, 'b');
+  const TitleLayout two = layout_title(two_lines, 720.0);
+  EXPECT_EQ(two.font_px, 15.0);
+  EXPECT_EQ(two.lines, (std::vector<std::string>{std::string(70, 'a'), std::string(70, 'b')}));
+  const TitleLayout smaller = layout_title(two_lines + " " + std::string(70, 'c'), 720.0);
+  EXPECT_LT(smaller.font_px, 15.0);
+  EXPECT_EQ(smaller.lines.size(), 2u);
+  const TitleLayout cut = layout_title(std::string(2000, 'z'), 720.0);
+  EXPECT_EQ(cut.font_px, 9.0);
+  ASSERT_EQ(cut.lines.size(), 2u);
+  EXPECT_EQ(cut.lines[1].substr(cut.lines[1].size() - 3), "...");
+  EXPECT_TRUE(layout_title("", 720.0).lines.empty());
 }
 
 }  // namespace
