@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -127,7 +128,8 @@ std::vector<DataSet> make_data_sets(const CalibrationConfig& config) {
   return sets;
 }
 
-std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evaluation& e) {
+std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evaluation& e,
+                                  const LackOfFitOptions& lack_of_fit_options) {
   std::vector<DataSetFit> fits;
   for (const auto& d : pipeline.data_sets()) {
     const Measurement& m = d.measurement;
@@ -149,6 +151,11 @@ std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evalua
     }
     fit.rms_difference = std::sqrt(sum_sq / static_cast<double>(m.x.size()));
     fit.cost = cost;
+    std::vector<double> normalised;
+    for (std::size_t i = 0; i < m.x.size(); ++i) {
+      normalised.push_back(d.weights[i] * (fit.simulated[i] - m.y[i]));
+    }
+    fit.lack_of_fit = lack_of_fit(normalised, m.name, lack_of_fit_options);
     fits.push_back(std::move(fit));
   }
   return fits;
@@ -184,6 +191,91 @@ void finish(const ForwardCache& cache, const CalibrationConfig& config,
         options.output_directory.empty() ? config.output_directory : options.output_directory;
     result->report_notes = write_calibration_report(*result, config, result->output_directory);
   }
+}
+
+// Per residual, what the forward solver's convergence leaves unresolved (least_squares.h):
+// factor x tolerance x the data set's largest |measured value|, weighted like the residual.
+Eigen::VectorXd residual_noise(const CalibrationConfig& config,
+                               const std::vector<SceneBinding>& bindings,
+                               const ResidualPipeline& pipeline) {
+  const double factor = config.optimizer.noise_floor_factor;
+  if (!(factor > 0.0)) return {};
+  Eigen::VectorXd noise(pipeline.num_residuals());
+  for (std::size_t k = 0; k < pipeline.data_sets().size(); ++k) {
+    const DataSet& d = pipeline.data_sets()[k];
+    const double tolerance =
+        config.forward.tolerance > 0.0
+            ? config.forward.tolerance
+            : bindings.at(static_cast<std::size_t>(d.scene)).base_scene().numerics.tolerance;
+    double largest = 0.0;
+    for (double y : d.measurement.y) largest = std::max(largest, std::abs(y));
+    const int offset = pipeline.offset(static_cast<int>(k));
+    for (std::size_t i = 0; i < d.weights.size(); ++i) {
+      noise[offset + static_cast<Eigen::Index>(i)] = factor * tolerance * largest * d.weights[i];
+    }
+  }
+  return noise;
+}
+
+std::vector<BoundEffect> bound_effects(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& r,
+                                       const Eigen::VectorXd& x, const Objective& objective,
+                                       double floor) {
+  std::vector<BoundEffect> effects;
+  const Eigen::VectorXd g = jacobian.transpose() * r;
+  for (Eigen::Index j = 0; j < x.size(); ++j) {
+    const double scale = objective.scale()[j];
+    const double lower = objective.lower()[j], upper = objective.upper()[j];
+    const int side = std::isfinite(lower) && std::abs(x[j] - lower) <= 1e-6 * scale   ? -1
+                     : std::isfinite(upper) && std::abs(x[j] - upper) <= 1e-6 * scale ? 1
+                                                                                      : 0;
+    if (side == 0) continue;
+    BoundEffect e;
+    e.name = objective.names()[static_cast<std::size_t>(j)];
+    e.side = side;
+    e.bound = side < 0 ? lower : upper;
+    e.gradient = g[j];
+    const double h = jacobian.col(j).squaredNorm();
+    const bool outward = side < 0 ? g[j] > 0.0 : g[j] < 0.0;
+    e.unconstrained = h > 0.0 ? x[j] - g[j] / h : x[j];
+    e.cost_decrease = outward && h > 0.0 ? 0.5 * g[j] * g[j] / h : 0.0;
+    e.active = outward && e.cost_decrease > floor;
+    const char* which = side < 0 ? "lower" : "upper";
+    e.text =
+        e.active
+            ? fmt::format(
+                  "{} is AT its {} bound {:.6g}, which holds the fit back: the cost gradient "
+                  "there is {:.3g} per unit (pushing outward); without the bound the linearised "
+                  "fit would go to {:.4g} and lower the cost by {:.3g}",
+                  e.name, which, e.bound, e.gradient, e.unconstrained, e.cost_decrease)
+            : fmt::format(
+                  "{} is AT its {} bound {:.6g}, where the data put it: the cost gradient there "
+                  "({:.3g} per unit) does not push beyond it by more than the forward noise",
+                  e.name, which, e.bound, e.gradient);
+    effects.push_back(e);
+  }
+  return effects;
+}
+
+// The configuration of one model-form refit: the alternative's scene edits added to
+// [forward.set], started from the identified values, plain Levenberg-Marquardt.
+CalibrationConfig model_form_config(const CalibrationConfig& config, const ModelFormSpec& form,
+                                    const std::vector<ParameterResult>& identified) {
+  CalibrationConfig c = config;
+  c.model_forms.clear();
+  c.optimizer.method = OptimizerMethod::kLevenbergMarquardt;
+  for (const auto& edit : form.overrides) c.forward.overrides.push_back(edit);
+  for (std::size_t i = 0; i < c.parameters.size() && i < identified.size(); ++i) {
+    c.parameters[i].initial = identified[i].value;
+  }
+  return c;
+}
+
+std::string edits_text(const ModelFormSpec& form) {
+  std::string text;
+  for (const auto& [address, value] : form.overrides) {
+    text += fmt::format("{}{}={}", text.empty() ? "" : " ", address, value);
+  }
+  return text;
 }
 
 }  // namespace
@@ -226,16 +318,44 @@ std::string CalibrationResult::brief_report() const {
     }
     if (uncertainty_available) {
       const auto& u = uncertainty.parameters.at(k);
-      text += fmt::format("  {:32s} {:>14.6g} +- {:<10.3g} 95% [{:.6g}, {:.6g}] {}{}\n",
-                          p.spec.address, p.value, u.std_error, u.interval_lower, u.interval_upper,
-                          p.unit, u.determined ? "" : "  (poorly determined)");
+      text += fmt::format(
+          "  {:32s} {:>14.6g} +- {:<10.3g} 95% [{:.6g}, {:.6g}] {}{}{}\n", p.spec.address, p.value,
+          u.std_error, u.interval_lower, u.interval_upper, p.unit,
+          u.forward_resolution > 0.1 * u.std_error
+              ? fmt::format(" (incl. +- {:.3g} forward resolution)", u.forward_resolution)
+              : std::string(),
+          u.determined ? "" : "  (poorly determined)");
     } else {
       text += fmt::format("  {:32s} {:>14.6g} {}\n", p.spec.address, p.value, p.unit);
     }
     ++k;
   }
+  if (!model_form_ranges.empty()) {
+    text += fmt::format(
+        "  model-form range over the main fit and {} alternative(s) ({} forward "
+        "runs):\n",
+        model_form.size(), model_form_forward_runs);
+    for (const auto& range : model_form_ranges) {
+      text += fmt::format("  {:32s} [{:.6g}, {:.6g}]{}\n", range.name, range.lower, range.upper,
+                          range.exceeds_interval ? "  (wider than the statistical interval)" : "");
+    }
+    for (const auto& f : model_form) {
+      std::string values;
+      for (double v : f.values) values += fmt::format("{}{:.6g}", values.empty() ? "" : ", ", v);
+      text += fmt::format("    {} ({}): {}\n", f.name, f.edits,
+                          f.values.empty() ? f.message
+                                           : fmt::format("{} ({} forward runs, {})", values,
+                                                         f.forward_runs, f.termination));
+    }
+  }
+  for (const auto& b : bound_effects) text += fmt::format("  {}\n", b.text);
   for (const auto& w : data_weighting) {
     if (w.relative_default) text += fmt::format("  data {}: {}\n", w.name, w.text);
+  }
+  for (const auto& f : fits) {
+    if (f.lack_of_fit.verdict == LackOfFitVerdict::kStructural) {
+      text += fmt::format("  lack of fit: {}\n", f.lack_of_fit.text);
+    }
   }
   if (uncertainty_available) {
     for (const auto& s : uncertainty.statements) text += fmt::format("  note: {}\n", s);
@@ -259,6 +379,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   std::vector<SceneBinding> bindings = bind_scenes(config);
   validate_calibration_config(config);
   check_against_scenes(config, bindings);
+  for (const ModelFormSpec& form : config.model_forms) {
+    // Each alternative's scene edits are checked now, not after the main fit.
+    CalibrationConfig alternative = config;
+    for (const auto& edit : form.overrides) alternative.forward.overrides.push_back(edit);
+    try {
+      bind_scenes(alternative);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: model_form '{}': {}", form.where, form.name, e.what()));
+    }
+  }
 
   CalibrationResult result;
   for (const auto& b : bindings) result.scene_sources.push_back(b.source());
@@ -267,8 +397,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
         {d.measurement.name, data_set_sigma(d).text,
          d.sigma == 0.0 && d.weight == 0.0 && d.measurement.point_sigma.empty()});
   }
-  ForwardCache cache(std::move(model), std::move(bindings), config.parameters,
-                     ResidualPipeline(make_data_sets(config)), config.optimizer.threads);
+  const ForwardModel model_for_alternatives = config.model_forms.empty() ? ForwardModel{} : model;
+  ResidualPipeline pipeline(make_data_sets(config));
+  const Eigen::VectorXd noise = residual_noise(config, bindings, pipeline);
+  ForwardCache cache(std::move(model), std::move(bindings), config.parameters, std::move(pipeline),
+                     config.optimizer.threads);
   Objective objective(&cache, config.optimizer.fd);
   say(fmt::format("calibrate: {} free parameters, {} residuals, {} scene(s), {} thread(s)",
                   objective.num_parameters(), objective.num_residuals(),
@@ -306,7 +439,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
 
   LeastSquaresOptions ls = config.optimizer.least_squares;
   ls.progress = options.progress;
+  ls.residual_noise = noise;
   const LeastSquaresSummary summary = solve_least_squares(objective, x_start, ls);
+  result.noise_floor = summary.noise_floor;
+  result.noise_floor_cost = summary.noise_floor_cost;
+  result.passes = summary.passes;
   result.iterations = summary.iterations;
   result.ceres_termination = summary.termination;
   result.message = summary.message;
@@ -324,19 +461,71 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   const auto final_point = objective.evaluate(x);
   result.final_cost = final_point->cost;
   if (final_point->ok) {
-    result.fits = make_fits(cache.pipeline(), *final_point);
-    const FdJacobian j = objective.jacobian(x);
-    if (j.ok) {
+    result.fits = make_fits(cache.pipeline(), *final_point, config.uncertainty.lack_of_fit);
+    const FdJacobian j = options.uncertainty ? objective.jacobian(x) : FdJacobian{};
+    if (!options.uncertainty) {
+      result.uncertainty_message = "not computed (model-form refit)";
+    } else if (j.ok) {
       result.uncertainty = estimate_uncertainty(j.jacobian, final_point->cost, x, objective.scale(),
                                                 objective.lower(), objective.upper(),
                                                 objective.names(), config.uncertainty);
+      add_forward_resolution(j.jacobian, noise_floor_cost(final_point->residuals, noise),
+                             &result.uncertainty);
       result.uncertainty_available = true;
+      result.bound_effects = bound_effects(j.jacobian, final_point->residuals, x, objective,
+                                           noise_floor_cost(final_point->residuals, noise));
+      // A parameter the bound holds back has the bound's value, not one the data determine.
+      for (const BoundEffect& b : result.bound_effects) {
+        for (auto& u : result.uncertainty.parameters) {
+          if (b.active && u.name == b.name) u.determined = false;
+        }
+      }
     } else {
       result.uncertainty_message = "Jacobian at the optimum failed: " + j.message;
     }
   } else {
     result.uncertainty_message =
         "the forward model fails at the final point: " + final_point->message;
+  }
+
+  if (result.termination != CalibrationTermination::kFailed && !config.model_forms.empty()) {
+    // Model-form sensitivity: the same fit under each alternative model choice, from here.
+    const Eigen::VectorXd main_values = result.free_values();
+    Eigen::VectorXd lower = main_values, upper = main_values;
+    for (const ModelFormSpec& form : config.model_forms) {
+      say(fmt::format("model form '{}': refit with {}", form.name, edits_text(form)));
+      CalibrationOptions quiet;
+      quiet.write_report = false;
+      quiet.uncertainty = false;
+      ModelFormFit fit;
+      fit.name = form.name;
+      fit.edits = edits_text(form);
+      const CalibrationResult alternative = calibrate(
+          model_form_config(config, form, result.parameters), quiet, model_for_alternatives);
+      fit.termination = to_string(alternative.termination);
+      fit.message = alternative.message;
+      fit.final_cost = alternative.final_cost;
+      fit.forward_runs = alternative.forward_runs;
+      result.model_form_forward_runs += alternative.forward_runs;
+      if (alternative.termination != CalibrationTermination::kFailed) {
+        const Eigen::VectorXd v = alternative.free_values();
+        fit.values.assign(v.data(), v.data() + v.size());
+        lower = lower.cwiseMin(v);
+        upper = upper.cwiseMax(v);
+      }
+      result.model_form.push_back(fit);
+    }
+    for (Eigen::Index j = 0; j < main_values.size(); ++j) {
+      ModelFormRange range;
+      range.name = objective.names()[static_cast<std::size_t>(j)];
+      range.lower = lower[j];
+      range.upper = upper[j];
+      if (result.uncertainty_available) {
+        const auto& u = result.uncertainty.parameters.at(static_cast<std::size_t>(j));
+        range.exceeds_interval = range.upper - range.lower > u.interval_upper - u.interval_lower;
+      }
+      result.model_form_ranges.push_back(range);
+    }
   }
 
   if (result.termination == CalibrationTermination::kFailed) {

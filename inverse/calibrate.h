@@ -10,6 +10,7 @@
 #include "calibration_config.h"
 #include "forward_cache.h"
 #include "forward_model.h"
+#include "lack_of_fit.h"
 #include "uncertainty.h"
 
 namespace vs {
@@ -20,6 +21,8 @@ struct CalibrationOptions {
   bool write_report = true;
   // Replaces config.output_directory when not empty (vshell calibrate -o DIR).
   std::string output_directory;
+  // Statistical uncertainty at the optimum (one more Jacobian); the model-form refits skip it.
+  bool uncertainty = true;
 };
 
 enum class CalibrationTermination {
@@ -39,6 +42,41 @@ struct DataSetFit {
   double cost = 0.0;            // 0.5 sum of weighted squared residuals
   double rms_difference = 0.0;  // sqrt(mean((simulated - measured)^2)), in N or strain
   bool ok = false;
+  LackOfFit lack_of_fit;  // of weight x (simulated - measured), in abscissa order
+};
+
+// A free parameter that ended on a bound, and what the bound does to the fit: the cost
+// gradient there and, from the linearised model with the other parameters held, where the fit
+// would go without the bound and how much lower the cost would be.
+struct BoundEffect {
+  std::string name;
+  int side = 0;  // -1 lower, +1 upper
+  double bound = 0.0;
+  double gradient = 0.0;       // d cost / d parameter at the bound, own units
+  bool active = false;         // the gradient pushes outward: the bound holds the fit back
+  double unconstrained = 0.0;  // value - gradient / (J^T J)_jj
+  double cost_decrease = 0.0;  // gradient^2 / (2 (J^T J)_jj), when active
+  std::string text;
+};
+
+// The fit repeated under one alternative model choice ([[model_form]]).
+struct ModelFormFit {
+  std::string name;
+  std::string edits;  // "blank.elements=48 ..."
+  std::string termination;
+  std::string message;
+  std::vector<double> values;  // free parameters, free order (empty if it failed)
+  double final_cost = 0.0;
+  int forward_runs = 0;
+};
+
+// Per free parameter: the smallest and largest identified value over the main fit and every
+// model-form fit.
+struct ModelFormRange {
+  std::string name;
+  double lower = 0.0;
+  double upper = 0.0;
+  bool exceeds_interval = false;  // the range is wider than the statistical interval
 };
 
 struct ParameterResult {
@@ -65,8 +103,15 @@ struct CalibrationResult {
   int failed_evaluations = 0;  // points whose residuals could not be formed
   double wall_time_s = 0.0;
   CalibrationTermination termination = CalibrationTermination::kFailed;
-  std::string ceres_termination;  // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
-  std::string message;            // why it stopped
+  std::string ceres_termination;           // CONVERGENCE, NO_CONVERGENCE, FAILURE, ...
+  std::string message;                     // why it stopped
+  bool noise_floor = false;                // stopped at the forward solver's noise floor
+  double noise_floor_cost = 0.0;           // the cost resolution F at the end (least_squares.h)
+  int passes = 1;                          // Ceres solves (active-set restarts + 1)
+  std::vector<BoundEffect> bound_effects;  // free parameters ending on a bound
+  std::vector<ModelFormFit> model_form;    // one per [[model_form]]
+  std::vector<ModelFormRange> model_form_ranges;  // free order, when model_form is not empty
+  int model_form_forward_runs = 0;
   bool global_search_used = false;
   GlobalSearchSummary global;  // when used
   std::vector<DataSetFit> fits;

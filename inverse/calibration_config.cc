@@ -329,6 +329,8 @@ void read_optimizer(const toml::table* t, const std::string& file, OptimizerSett
   }
   o.fd.relative_step = r.number("relative_step").value_or(o.fd.relative_step);
   o.fd.ridders_levels = static_cast<int>(r.integer("ridders_levels").value_or(o.fd.ridders_levels));
+  o.noise_floor_factor = r.number("noise_floor_factor").value_or(o.noise_floor_factor);
+  ls.active_set = r.boolean("active_set").value_or(ls.active_set);
   o.threads = static_cast<int>(r.integer("threads").value_or(o.threads));
   o.global.algorithm = r.choice("global_algorithm").value_or(o.global.algorithm);
   if (const auto seed = r.integer("seed")) o.global.seed = static_cast<unsigned long>(*seed);
@@ -347,6 +349,9 @@ void read_uncertainty(const toml::table* t, const std::string& file, Uncertainty
   u.correlation_threshold = r.number("correlation_threshold").value_or(u.correlation_threshold);
   u.relative_error_threshold =
       r.number("relative_error_threshold").value_or(u.relative_error_threshold);
+  u.lack_of_fit.significance =
+      r.number("lack_of_fit_significance").value_or(u.lack_of_fit.significance);
+  u.lack_of_fit.min_rms = r.number("lack_of_fit_min_rms").value_or(u.lack_of_fit.min_rms);
   r.finish();
 }
 
@@ -359,19 +364,47 @@ std::string value_text(const toml::node& node, const std::string& where) {
   throw InputError(fmt::format("{}: must be a number, boolean or string", where));
 }
 
+// A table of scene edits ([forward.set], model_form.set) as (address, value text) pairs.
+std::vector<std::pair<std::string, std::string>> scene_edits(const toml::table& set,
+                                                             const std::string& file,
+                                                             const std::string& key_prefix) {
+  std::vector<std::pair<std::string, std::string>> edits;
+  for (const auto& [key, node] : set) {
+    const std::string address(key.str());
+    edits.emplace_back(
+        address, value_text(node, fmt::format("{}:{}: key '{}.{}'", file, node.source().begin.line,
+                                              key_prefix, address)));
+  }
+  return edits;
+}
+
 void read_forward(const toml::table* t, const std::string& file, ForwardSettings& f) {
   if (!t) return;
   TableReader r(*t, file, "forward");
   f.tolerance = r.number("tolerance").value_or(f.tolerance);
   if (const toml::table* set = r.table("set")) {
-    for (const auto& [key, node] : *set) {
-      const std::string address(key.str());
-      f.overrides.emplace_back(address,
-                               value_text(node, fmt::format("{}:{}: key 'forward.set.{}'", file,
-                                                            node.source().begin.line, address)));
-    }
+    for (auto& edit : scene_edits(*set, file, "forward.set")) f.overrides.push_back(edit);
   }
   r.finish();
+}
+
+ModelFormSpec read_model_form(const toml::table& t, const std::string& file) {
+  TableReader r(t, file, "model_form");
+  ModelFormSpec form;
+  form.where = r.where();
+  const auto name = r.string("name");
+  const toml::table* set = r.table("set");
+  r.finish();
+  if (!name) throw InputError(fmt::format("{}: [[model_form]] needs a name", form.where));
+  if (!set || set->empty()) {
+    throw InputError(fmt::format(
+        "{}: [[model_form]] '{}' needs set = {{ \"address\" = value, ... }} (the scene edits of "
+        "the alternative model)",
+        form.where, *name));
+  }
+  form.name = *name;
+  form.overrides = scene_edits(*set, file, "model_form.set");
+  return form;
 }
 
 }  // namespace
@@ -381,8 +414,9 @@ CalibrationConfig load_calibration_config(const std::string& path) {
   const std::string base_dir = fs::path(path).parent_path().string();
   CalibrationConfig config;
   config.path = path;
-  TableReader top(root, path, "",
-                  {"parameter", "data", "optimizer", "uncertainty", "forward", "output"});
+  TableReader top(
+      root, path, "",
+      {"parameter", "data", "optimizer", "uncertainty", "model_form", "forward", "output"});
   config.scenes = read_scenes(top, path, base_dir);
   for (const toml::table* t : table_array(top, "parameter")) {
     config.parameters.push_back(read_parameter(*t, path));
@@ -393,6 +427,9 @@ CalibrationConfig load_calibration_config(const std::string& path) {
   read_optimizer(top.table("optimizer"), path, config.optimizer);
   read_uncertainty(top.table("uncertainty"), path, config.uncertainty);
   read_forward(top.table("forward"), path, config.forward);
+  for (const toml::table* t : table_array(top, "model_form")) {
+    config.model_forms.push_back(read_model_form(*t, path));
+  }
   if (const toml::table* output = top.table("output")) {
     TableReader r(*output, path, "output");
     config.output_directory = r.string("directory").value_or(config.output_directory);
@@ -524,6 +561,20 @@ void validate_calibration_config(const CalibrationConfig& config) {
                       "names",
                       d.where, m.name, d.scene));
     }
+  }
+  std::set<std::string> form_names;
+  for (const auto& form : config.model_forms) {
+    if (!form_names.insert(form.name).second) {
+      throw InputError(fmt::format("{}: model_form name '{}' used twice", form.where, form.name));
+    }
+    if (form.overrides.empty()) {
+      throw InputError(
+          fmt::format("{}: model_form '{}' has no scene edits (set)", form.where, form.name));
+    }
+  }
+  if (!(config.optimizer.noise_floor_factor >= 0.0) ||
+      !std::isfinite(config.optimizer.noise_floor_factor)) {
+    throw InputError(fmt::format("{}: noise_floor_factor must be finite and >= 0", file));
   }
   if (points < static_cast<std::size_t>(free)) {
     throw InputError(

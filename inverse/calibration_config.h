@@ -51,12 +51,27 @@ DataSigma data_set_sigma(const DataSpec& d);
 
 enum class OptimizerMethod { kLevenbergMarquardt, kGlobalThenLocal };
 
+// Default optimizer.noise_floor_factor: the forward outputs are taken to be resolved to
+// factor x forward tolerance x each curve's largest |value|. experiments/06_step_stability
+// measured the jitter at tolerance 1e-8 as ~1e-8 of the force and ~5e-8 in thickness strain
+// (strains up to ~0.3: ~2e-7 of the curve), i.e. 1x and ~17x the tolerance; 20 covers both.
+inline constexpr double kDefaultNoiseFloorFactor = 20.0;
+
 struct OptimizerSettings {
   OptimizerMethod method = OptimizerMethod::kLevenbergMarquardt;
-  LeastSquaresOptions least_squares;  // progress is set by calibrate()
+  LeastSquaresOptions least_squares;  // progress and residual_noise are set by calibrate()
   FdOptions fd;
   GlobalSearchOptions global;
   int threads = 2;
+  double noise_floor_factor = kDefaultNoiseFloorFactor;  // 0: no noise-floor stop
+};
+
+// One alternative model choice of the model-form sensitivity ([[model_form]]): the fit is
+// repeated with these scene edits added to [forward.set], from the identified values.
+struct ModelFormSpec {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> overrides;  // address, value as text
+  std::string where;                                           // config file:line
 };
 
 struct CalibrationConfig {
@@ -67,6 +82,7 @@ struct CalibrationConfig {
   OptimizerSettings optimizer;
   UncertaintyOptions uncertainty;
   ForwardSettings forward;
+  std::vector<ModelFormSpec> model_forms;
   std::string output_directory = "calib_out";
   bool plots = true;
 };

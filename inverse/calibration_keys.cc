@@ -165,12 +165,29 @@ std::vector<KeySpec> build() {
   k.push_back(key(
       o, "relative_step", kFloat, "", Range{0, 1, false, false},
       [] { return float_toml_text(optimizer().fd.relative_step); },
-      "Finite-difference step = relative_step x scale. The error is ~ forward "
-      "tolerance / step: keep it well above [forward] tolerance."));
+      "Finite-difference step = relative_step x scale. The noise error is ~ forward "
+      "tolerance / step, the truncation error ~ step^2: 0.05 needed the fewest forward runs "
+      "on the bundled fits and kept their intervals truthful, where 2e-3 gave intervals 4x "
+      "too narrow on noisy data (data/calibration/README.md, Status)."));
   k.push_back(key(
       o, "ridders_levels", kInt, "", closed(2, 10),
       [] { return std::to_string(optimizer().fd.ridders_levels); },
       "Ridders: steps h, h/2, ..., h/2^(levels-1)."));
+  k.push_back(key(
+      o, "noise_floor_factor", kFloat, "", closed(0, 1e6),
+      [] { return float_toml_text(kDefaultNoiseFloorFactor); },
+      "Stop at the forward solver's noise floor: each simulated value is taken to be resolved "
+      "to noise_floor_factor x [forward] tolerance x the data set's largest |value|; when the "
+      "best cost decrease the linearised model still offers is below what that resolution "
+      "can tell apart, the fit stops (\"stopped at the noise floor\"). The default covers the "
+      "jitter measured in experiments/06_step_stability (1x the tolerance in force, ~17x in "
+      "thickness strain). 0 turns the stop off."));
+  k.push_back(key(
+      o, "active_set", kBool, "", Range{},
+      [] { return std::string(optimizer().least_squares.active_set ? "true" : "false"); },
+      "Hold a parameter that the cost pushes against a bound ON the bound and solve for the "
+      "others, releasing it when the cost pulls it back; false lets Ceres project its steps "
+      "onto the bounds, which creeps along an active bound."));
   k.push_back(key(
       o, "threads", kInt, "", closed(1, 256), [] { return std::to_string(optimizer().threads); },
       "Forward runs in parallel (finite differences, global search batches)."));
@@ -216,6 +233,26 @@ std::vector<KeySpec> build() {
       "poorly determined."));
 
   k.push_back(key(
+      u, "lack_of_fit_significance", kFloat, "", Range{0, 0.5, false, false},
+      [] { return float_toml_text(uncertainty().lack_of_fit.significance); },
+      "Lack-of-fit diagnostic per data set: one-sided level of the runs test and of the lag-1 "
+      "autocorrelation test on the normalised residuals (simulated - measured) / sigma. "
+      "Either test rejecting independent noise is a pattern."));
+  k.push_back(key(
+      u, "lack_of_fit_min_rms", kFloat, "", at_least(0),
+      [] { return float_toml_text(uncertainty().lack_of_fit.min_rms); },
+      "A pattern whose rms is at least this many sigmas is reported as STRUCTURAL misfit "
+      "(model-form error, not noise); smaller patterns are negligible."));
+
+  k.push_back(required("model_form", "name", kString,
+                       "Label of the alternative model choice in the report."));
+  k.push_back(required("model_form", "set", KeyType::kTable,
+                       "Scene edits of the alternative, as in [forward.set] and added to it: "
+                       "{ \"blank.elements\" = 48 }, { \"numerics.thickness_points\" = 9 }, "
+                       "{ \"numerics.strain_rate_cutoff\" = 1e-4 }. Checked before any "
+                       "forward run."));
+
+  k.push_back(key(
       "forward", "tolerance", kFloat, "", closed(0, 0.1),
       [] { return float_toml_text(ForwardSettings{}.tolerance); },
       "numerics.tolerance of every forward run during the calibration (finite "
@@ -252,8 +289,18 @@ const std::vector<SectionSpec>& calibration_sections() {
       {"parameter", "[[parameter]]", "One table per scene number to identify or hold."},
       {"data", "[[data]]", "One table per measured curve."},
       {"optimizer", "[optimizer]", "Least-squares method, finite differences, parallel runs."},
-      {"uncertainty", "[uncertainty]", "Covariance, intervals and the plain-language checks."},
+      {"uncertainty", "[uncertainty]",
+       "Covariance, intervals and the plain-language checks. Each interval also includes the "
+       "parameter's forward resolution (how far the forward solver's convergence noise lets "
+       "the fit stop from the least-squares optimum; calibration.json forward_resolution), "
+       "and each data set gets a lack-of-fit verdict (noise, structural, negligible)."},
       {"forward", "[forward]", "Settings of every forward run of the calibration."},
+      {"model_form", "[[model_form]]",
+       "Model-form sensitivity: one table per alternative model choice (a finer mesh, another "
+       "element rule, the strain-rate cut-off, ...). After the fit, the fit is repeated under "
+       "each alternative from the identified values, and the report gives, beside each "
+       "statistical interval, the model-form range: the smallest and largest value over the "
+       "main fit and the alternatives."},
       {"output", "[output]", "The report folder."},
   };
   return sections;
@@ -329,7 +376,10 @@ std::string calibration_reference_markdown() {
       "default), and the report says so.\n\n"
       "## Report folder\n\n"
       "`calibration.json` (identified values, standard errors, intervals, correlations, "
-      "statements, termination; non-finite numbers are left out rather than written as null), "
+      "statements, termination and whether the fit stopped at the noise floor, parameters at "
+      "a bound with the bound's effect, the lack-of-fit diagnostic per data set, the "
+      "model-form fits and ranges; non-finite numbers are left out rather than written as "
+      "null), "
       "`evaluations.csv` (every forward evaluation; a failed one has status `failed`, an "
       "empty cost and the reason), `fit_<name>.csv` and `.svg` (measured against simulated at "
       "the optimum) and `cost.svg`.\n";

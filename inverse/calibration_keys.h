@@ -13,7 +13,7 @@
 namespace vs {
 
 // Every key, sections in file order: "" (top level), "scene", "parameter", "data",
-// "optimizer", "uncertainty", "forward", "output".
+// "optimizer", "uncertainty", "model_form", "forward", "output".
 const std::vector<KeySpec>& calibration_keys();
 
 // Sections in documentation order ("[[parameter]]", ...), with a one-line description each.

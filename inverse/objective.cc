@@ -21,7 +21,7 @@ Objective::Objective(ForwardCache* cache, FdOptions fd) : cache_(cache), fd_(fd)
   }
 }
 
-FdJacobian Objective::jacobian(const Eigen::VectorXd& x) {
+FdJacobian Objective::jacobian(const Eigen::VectorXd& x, const std::vector<bool>& held) {
   const auto center = cache_->evaluate(x);
   if (!center->ok) {
     FdJacobian failed;
@@ -35,7 +35,14 @@ FdJacobian Objective::jacobian(const Eigen::VectorXd& x) {
     }
     return values;
   };
-  return fd_jacobian(x, center->residuals, lower_, upper_, scale_, fd_, batch);
+  // A held column gets an empty interval at x: fd_jacobian leaves it zero without a run.
+  Eigen::VectorXd lower = lower_, upper = upper_;
+  for (std::size_t j = 0; j < held.size(); ++j) {
+    if (!held[j]) continue;
+    lower[static_cast<Eigen::Index>(j)] = x[static_cast<Eigen::Index>(j)];
+    upper[static_cast<Eigen::Index>(j)] = x[static_cast<Eigen::Index>(j)];
+  }
+  return fd_jacobian(x, center->residuals, lower, upper, scale_, fd_, batch);
 }
 
 }  // namespace vs

@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "fd_jacobian.h"
 #include "forward_cache.h"
@@ -26,8 +28,10 @@ class Objective {
   std::shared_ptr<const Evaluation> evaluate(const Eigen::VectorXd& x) {
     return cache_->evaluate(x);
   }
-  // d r / d x at x (x must evaluate successfully; its residuals are reused).
-  FdJacobian jacobian(const Eigen::VectorXd& x);
+  // d r / d x at x (x must evaluate successfully; its residuals are reused). Columns whose
+  // `held` entry is true (parameters held on a bound by the active-set solver) are not
+  // differentiated and stay zero: no forward runs are spent on them.
+  FdJacobian jacobian(const Eigen::VectorXd& x, const std::vector<bool>& held = {});
 
   ForwardCache& cache() { return *cache_; }
   const FdOptions& fd_options() const { return fd_; }

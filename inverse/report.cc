@@ -130,6 +130,10 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
   j["iterations"] = result.iterations;
   put_finite(j, "initial_cost", result.initial_cost);
   put_finite(j, "final_cost", result.final_cost);
+  j["stopped_at_noise_floor"] = result.noise_floor;
+  if (result.noise_floor_cost > 0.0) j["noise_floor_cost"] = result.noise_floor_cost;
+  j["noise_floor_factor"] = config.optimizer.noise_floor_factor;
+  j["active_set_passes"] = result.passes;
   j["forward_runs"] = result.forward_runs;
   j["evaluations"] = result.evaluations.size();
   j["failed_evaluations"] = result.failed_evaluations;
@@ -161,8 +165,30 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
       put_finite(entry, "std_error", u.std_error);  // absent: not determined
       put_finite(entry, "interval_lower", u.interval_lower);
       put_finite(entry, "interval_upper", u.interval_upper);
+      entry["forward_resolution"] = u.forward_resolution;  // included in the interval
       entry["determined"] = u.determined;
       entry["at_bound"] = u.at_bound;
+    }
+    for (const auto& b : result.bound_effects) {
+      if (b.name != p.spec.address || p.spec.fixed) continue;
+      ordered_json effect = {{"side", b.side < 0 ? "lower" : "upper"},
+                             {"bound", b.bound},
+                             {"cost_gradient", b.gradient},
+                             {"holds_the_fit_back", b.active}};
+      if (b.active) {
+        effect["unconstrained_value"] = b.unconstrained;
+        effect["cost_decrease_without_bound"] = b.cost_decrease;
+      }
+      effect["statement"] = b.text;
+      entry["bound_effect"] = effect;
+    }
+    if (!p.spec.fixed && !result.model_form_ranges.empty()) {
+      for (const auto& range : result.model_form_ranges) {
+        if (range.name != p.spec.address) continue;
+        entry["model_form_lower"] = range.lower;
+        entry["model_form_upper"] = range.upper;
+        entry["model_form_wider_than_interval"] = range.exceeds_interval;
+      }
     }
     if (!p.spec.fixed) ++k;
     parameters.push_back(entry);
@@ -211,9 +237,37 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
     put_finite(entry, "rms_difference", fit.rms_difference);
     entry["rms_unit"] = fit.kind == MeasurementKind::kLoadTravel ? "N" : "1";
     if (fit.kind != MeasurementKind::kLoadTravel) entry["travel_mm"] = fit.travel_mm;
+    const LackOfFit& l = fit.lack_of_fit;
+    ordered_json lof = {{"verdict", to_string(l.verdict)}, {"points", l.points}};
+    if (l.verdict != LackOfFitVerdict::kNotTested) {
+      lof["rms_normalised"] = l.rms;
+      lof["runs"] = l.runs;
+      lof["runs_expected"] = l.runs_expected;
+      put_finite(lof, "runs_z", l.runs_z);
+      lof["runs_p"] = l.runs_p;
+      lof["lag1_autocorrelation"] = l.lag1;
+      lof["lag1_z"] = l.lag1_z;
+      lof["z_critical"] = l.z_critical;
+    }
+    lof["statement"] = l.text;
+    entry["lack_of_fit"] = lof;
     data.push_back(entry);
   }
   j["data_sets"] = data;
+  if (!result.model_form.empty()) {
+    ordered_json forms = ordered_json::array();
+    for (const auto& f : result.model_form) {
+      ordered_json entry = {{"name", f.name},
+                            {"scene_edits", f.edits},
+                            {"termination", f.termination},
+                            {"message", f.message},
+                            {"forward_runs", f.forward_runs}};
+      put_finite(entry, "final_cost", f.final_cost);
+      if (!f.values.empty()) entry["values"] = f.values;
+      forms.push_back(entry);
+    }
+    j["model_form"] = {{"fits", forms}, {"forward_runs", result.model_form_forward_runs}};
+  }
   j["notes"] = result.report_notes;
   return j.dump(2) + "\n";
 }

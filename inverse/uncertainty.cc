@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <cmath>
 #include <limits>
@@ -31,6 +32,12 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
     return fail("correlation_threshold must be in (0, 1]");
   }
   if (!(relative_error_threshold > 0.0)) return fail("relative_error_threshold must be > 0");
+  if (!(lack_of_fit.significance > 0.0 && lack_of_fit.significance < 0.5)) {
+    return fail("lack_of_fit_significance must be in (0, 0.5)");
+  }
+  if (!(lack_of_fit.min_rms >= 0.0) || !std::isfinite(lack_of_fit.min_rms)) {
+    return fail("lack_of_fit_min_rms must be finite and >= 0");
+  }
   return true;
 }
 
@@ -160,6 +167,20 @@ UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double 
         "the scaled Jacobian is ill-conditioned (condition number {:.3g})", out.condition_number));
   }
   return out;
+}
+
+void add_forward_resolution(const Eigen::MatrixXd& jacobian, double noise_floor_cost,
+                            UncertaintySummary* summary) {
+  if (!(noise_floor_cost > 0.0) || jacobian.cols() == 0) return;
+  const Eigen::MatrixXd inverse =
+      (jacobian.transpose() * jacobian).completeOrthogonalDecomposition().pseudoInverse();
+  for (Eigen::Index j = 0; j < jacobian.cols(); ++j) {
+    auto& u = summary->parameters.at(static_cast<std::size_t>(j));
+    if (!std::isfinite(u.std_error) || !(inverse(j, j) > 0.0)) continue;
+    u.forward_resolution = std::sqrt(2.0 * noise_floor_cost * inverse(j, j));
+    u.interval_lower -= u.forward_resolution;
+    u.interval_upper += u.forward_resolution;
+  }
 }
 
 }  // namespace vs

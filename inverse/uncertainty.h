@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "lack_of_fit.h"
+
 namespace vs {
 
 struct UncertaintyOptions {
@@ -30,6 +32,8 @@ struct UncertaintyOptions {
   // std_error / |value| above this: "poorly determined". 0.1 means a 95 % interval wider than
   // about +-20 % of the value: too wide to use the number for prediction.
   double relative_error_threshold = 0.1;
+  // The per-data-set lack-of-fit diagnostic (lack_of_fit.h).
+  LackOfFitOptions lack_of_fit;
 
   bool IsValid(std::string* why) const;
 };
@@ -42,6 +46,9 @@ struct ParameterUncertainty {
   double interval_upper = 0.0;
   bool determined = true;  // false: in the null space, strongly correlated, or huge error
   bool at_bound = false;
+  // How far the forward solver's resolution lets the estimate sit from the least-squares
+  // optimum (add_forward_resolution); included in the interval.
+  double forward_resolution = 0.0;
 };
 
 struct UncertaintySummary {
@@ -63,6 +70,15 @@ struct UncertaintySummary {
 
 // `jacobian` is m x p in the parameters' own units; `cost` = 0.5 |r|^2 at `values`.
 // `lower`/`upper` only serve the at-bound warning.
+// Widens each parameter (with a finite standard error)'s interval by its forward resolution
+// sqrt(2 F [(J^T J)^-1]_jj): a fit that stops where the linearised model offers a decrease
+// D <= F (the noise floor, least_squares.h) leaves the parameters within that distance of the
+// least-squares optimum (|e_j^T dx| <= sqrt(e_j^T (J^T J)^-1 e_j) |J dx| and |J dx|^2 = 2 D).
+// With noise-free data the statistical interval shrinks to the solver's jitter and this term
+// is what keeps the truth inside; with noisy data it is negligible. `jacobian` in own units.
+void add_forward_resolution(const Eigen::MatrixXd& jacobian, double noise_floor_cost,
+                            UncertaintySummary* summary);
+
 UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double cost,
                                         const Eigen::VectorXd& values, const Eigen::VectorXd& scale,
                                         const Eigen::VectorXd& lower, const Eigen::VectorXd& upper,

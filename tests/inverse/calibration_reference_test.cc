@@ -81,12 +81,19 @@ threads = 1
 global_algorithm = "crs2"
 seed = 3
 max_evaluations = 10
+noise_floor_factor = 10
+active_set = false
 [uncertainty]
 confidence = 0.9
 scale_by_residual_variance = false
 rank_tolerance = 1e-9
 correlation_threshold = 0.9
 relative_error_threshold = 0.2
+lack_of_fit_significance = 0.05
+lack_of_fit_min_rms = 1
+[[model_form]]
+name = "fine mesh"
+set = { "blank.elements" = 40 }
 [forward]
 tolerance = 1e-8
 [forward.set]
@@ -111,6 +118,7 @@ plots = false
   const CalibrationConfig c = load_calibration_config((dir / "calibrate.toml").string());
   EXPECT_EQ(c.data[1].measurement.x.size(), 3u);
   EXPECT_EQ(c.optimizer.global.algorithm, "crs2");
+  EXPECT_EQ(c.model_forms.size(), 1u);
 }
 
 TEST(CalibrationReference, DefaultsInTheDocsAreTheReadersDefaults) {
@@ -128,6 +136,10 @@ TEST(CalibrationReference, DefaultsInTheDocsAreTheReadersDefaults) {
             std::to_string(c.optimizer.least_squares.max_iterations));
   EXPECT_EQ(default_toml_text(*find_calibration_key("data", "relative_sigma")),
             float_toml_text(c.data[0].relative_sigma));
+  EXPECT_EQ(default_toml_text(*find_calibration_key("optimizer", "noise_floor_factor")),
+            float_toml_text(c.optimizer.noise_floor_factor));
+  EXPECT_EQ(default_toml_text(*find_calibration_key("uncertainty", "lack_of_fit_min_rms")),
+            float_toml_text(c.uncertainty.lack_of_fit.min_rms));
   EXPECT_EQ(default_toml_text(*find_calibration_key("forward", "tolerance")),
             float_toml_text(c.forward.tolerance));
   EXPECT_EQ(default_toml_text(*find_calibration_key("output", "directory")),

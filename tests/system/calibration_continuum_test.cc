@@ -1,0 +1,195 @@
+// The lack-of-fit diagnostic on a stored continuum reference (issue 15): the CalculiX solution
+// of ex1 with punch friction 0.1 (experiments/08_continuum_reference/results/ex1_mu010_r60_l4)
+// is something the shell model cannot represent exactly (it thins the pole less, by ~0.01 at
+// 25 mm, section 5 of that README). A short fit of friction and K on the thickness-strain
+// profile at 25 mm and the load curve must end with the profile's misfit called STRUCTURAL,
+// while the same fit on the shell's own curves (synthetic, noise-free) calls nothing structural.
+// Coarse mesh (24 elements) and at most a few iterations: a few seconds.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "calibrate.h"
+#include "default_forward_model.h"
+#include "inverse/inverse_test_support.h"
+#include "measurement.h"
+#include "scene/load_scene.h"
+#include "scene/scene_table.h"
+#include "synthetic.h"
+
+namespace vs {
+namespace {
+
+const std::string kScene =
+    std::string(VS_SOURCE_DIR) + "/data/scenes/ex1_hemispherical_stretching.toml";
+const std::string kResults =
+    std::string(VS_SOURCE_DIR) + "/experiments/08_continuum_reference/results/";
+const std::string kReference = kResults + "ex1_mu010_r60_l4/";
+
+// Columns `x_name`, `y_name` of a plain CSV (one header line).
+void read_columns(const std::string& path, const std::string& x_name, const std::string& y_name,
+                  std::vector<double>* x, std::vector<double>* y) {
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  std::string line;
+  // The stored references have CRLF line ends.
+  auto next_line = [&in, &line] {
+    if (!std::getline(in, line)) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return true;
+  };
+  next_line();
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t cx = column(x_name), cy = column(y_name);
+  ASSERT_LT(cx, header.size());
+  ASSERT_LT(cy, header.size());
+  while (next_line()) {
+    if (line.empty()) continue;
+    std::vector<double> cells;
+    std::stringstream ls(line);
+    for (std::string cell; std::getline(ls, cell, ',');) cells.push_back(std::stod(cell));
+    x->push_back(cells.at(cx));
+    y->push_back(cells.at(cy));
+  }
+}
+
+double interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  for (std::size_t i = 1; i < x.size(); ++i) {
+    if (at <= x[i]) return y[i - 1] + (y[i] - y[i - 1]) * (at - x[i - 1]) / (x[i] - x[i - 1]);
+  }
+  return y.back();
+}
+
+// The continuum's load at 1..25 mm and thickness strain at `travels` for r0 = 0..50 mm.
+std::vector<Measurement> continuum_data(const std::string& folder = kReference,
+                                        const std::vector<int>& travels = {25}) {
+  std::vector<double> t, f;
+  read_columns(folder + "load_travel.csv", "punch_travel_mm", "punch_force_N", &t, &f);
+  Measurement load;
+  load.name = "load";
+  load.kind = MeasurementKind::kLoadTravel;
+  for (int i = 1; i <= 25; ++i) {
+    load.x.push_back(i);
+    load.y.push_back(interpolate(t, f, i));
+  }
+  std::vector<Measurement> data = {load};
+  for (int travel : travels) {
+    std::vector<double> r0, e;
+    read_columns(fmt::format("{}strains_travel_{}mm.csv", folder, travel), "r0_mm", "eps_thickness",
+                 &r0, &e);
+    Measurement thick;
+    thick.name = fmt::format("thick_{}mm", travel);
+    thick.kind = MeasurementKind::kThicknessStrain;
+    thick.travel_mm = travel;
+    for (int i = 0; i <= 20; ++i) {
+      thick.x.push_back(2.5 * i);
+      thick.y.push_back(interpolate(r0, e, 2.5 * i));
+    }
+    data.push_back(thick);
+  }
+  return data;
+}
+
+CalibrationConfig config_for(const std::vector<Measurement>& data) {
+  CalibrationConfig c;
+  c.scenes = {{"scene", kScene, "continuum test"}};
+  c.forward.tolerance = 1e-8;
+  c.forward.overrides = {
+      {"blank.elements", "24"}, {"process.punch_travel_mm", "25"}, {"tool.punch.friction", "0.1"}};
+  c.parameters = {testing::param("tool.punch.friction", 0.1, 0.0, 0.5, 0.1),
+                  testing::param("material.hardening.K_MPa", 589.0, 100.0, 2000.0, 500.0)};
+  const double sigma[] = {200.0, 0.003};  // ~1 % of each curve
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    c.data.push_back(testing::data_set(data[k], sigma[k]));
+  }
+  c.optimizer.least_squares.max_iterations = 4;
+  c.optimizer.fd.relative_step = 0.05;
+  return c;
+}
+
+CalibrationOptions quiet() {
+  CalibrationOptions o;
+  o.write_report = false;
+  return o;
+}
+
+TEST(CalibrationContinuum, LackOfFitFiresOnTheContinuumProfile) {
+  const auto result =
+      calibrate(config_for(continuum_data()), quiet(), make_default_forward_model());
+  fmt::print("{}", result.brief_report());
+  ASSERT_EQ(result.fits.size(), 2u);
+  for (const auto& fit : result.fits) fmt::print("  {}\n", fit.lack_of_fit.text);
+  EXPECT_EQ(result.fits[1].lack_of_fit.verdict, LackOfFitVerdict::kStructural)
+      << result.fits[1].lack_of_fit.text;
+}
+
+TEST(CalibrationContinuum, LackOfFitQuietOnTheShellsOwnCurves) {
+  // The same fit on the shell's own curves at the same parameters.
+  const CalibrationConfig base = config_for(continuum_data());
+  toml::table table = read_scene_table(kScene);
+  for (const auto& [address, text] : base.forward.overrides) {
+    set_scene_value_from_text(table, address, text);
+  }
+  set_scene_number(table, "numerics.tolerance", base.forward.tolerance);
+  set_scene_value_from_text(table, "process.output_travels_mm", "[25]");
+  const Scene scene = scene_from_table(table, kScene, "");
+  const RunResult run = make_default_forward_model()(scene);
+  ASSERT_TRUE(run.completed()) << run.message;
+  const auto reference = continuum_data();
+  const auto data = make_synthetic_measurements(
+      scene, run,
+      {{MeasurementKind::kLoadTravel, "load", 0.0, reference[0].x, 0.0, 0.0},
+       {MeasurementKind::kThicknessStrain, "thick_25mm", 25.0, reference[1].x, 0.0, 0.0}},
+      1);
+  CalibrationConfig config = config_for(data);
+  config.parameters[0].initial = 0.09;  // a little off, so that the fit has work to do
+  const auto result = calibrate(config, quiet(), make_default_forward_model());
+  fmt::print("{}", result.brief_report());
+  for (const auto& fit : result.fits) {
+    EXPECT_NE(fit.lack_of_fit.verdict, LackOfFitVerdict::kStructural) << fit.lack_of_fit.text;
+  }
+}
+
+// Issue 15's case, for the figures (not a CI test: ~4 min): friction-free continuum data, punch
+// friction, K and n free from x0.7, the scene's 50 elements, 25 mm; the friction optimum lies
+// below the bound 0. Plain Ceres (projected steps, no noise-floor stop) against the defaults
+// (active set, noise-floor stop). Run with
+//   build/tests/vs_system_tests --gtest_also_run_disabled_tests
+//       --gtest_filter='*DISABLED_FrictionFreeContinuumAtTheBound*'
+// Measured 2026-11-25 (load ~6 on 2 cores): plain 50 iterations, 327 forward runs, not converged,
+// cost 80.07; defaults 3 iterations, 26 forward runs, converged (noise floor), cost 75.55,
+// friction at 0 with the bound's effect stated.
+TEST(CalibrationContinuum, DISABLED_FrictionFreeContinuumAtTheBound) {
+  const auto data = continuum_data(kResults + "ex1_mu000_r60_l4/", {15, 25});
+  for (bool plain : {true, false}) {
+    CalibrationConfig c;
+    c.scenes = {{"scene", kScene, "continuum figures"}};
+    c.forward.tolerance = 1e-8;
+    c.forward.overrides = {{"process.punch_travel_mm", "25"}};
+    c.parameters = {testing::param("tool.punch.friction", 0.07, 0.0, 0.5, 0.1),
+                    testing::param("material.hardening.K_MPa", 412.3, 100.0, 2000.0, 500.0),
+                    testing::param("material.hardening.n", 0.1512, 0.05, 0.6, 0.2)};
+    for (const auto& m : data) c.data.push_back(testing::data_set(m, 0.0));  // 1 % of range
+    c.optimizer.fd.relative_step = 0.05;
+    if (plain) {
+      c.optimizer.noise_floor_factor = 0.0;
+      c.optimizer.least_squares.active_set = false;
+    }
+    const auto result = calibrate(c, quiet(), make_default_forward_model());
+    fmt::print("{}: {}", plain ? "plain Ceres" : "defaults", result.brief_report());
+    EXPECT_NE(result.termination, CalibrationTermination::kFailed);
+  }
+}
+
+}  // namespace
+}  // namespace vs
