@@ -77,7 +77,10 @@ int main(int argc, char** argv) {
     }
     return out;
   };
-  const std::vector<Row> rows = measure({});
+  // --set KEY=VALUE: the main series with these overrides (e.g. the implicit update).
+  Overrides user;
+  for (const auto& [key, value] : args.sets) user.push_back({key, value});
+  const std::vector<Row> rows = measure(user);
   const Row& fine = rows.back();
   Table t;
   t.header = {"elements",

@@ -7,11 +7,12 @@
 //   shell3d_benchmark [--divisions 4,8,16] [--rules mitc9,paper_selective] [--friction F]
 //                     [--travel MM] [--outputs A,B,C] [--increment MM] [--axisym-elements N]
 //                     [--scene FILE] [--csv FILE] [--speed-setting] [--per-length X]
-//                     [--cutoff X] [--implicit] [--goal]
+//                     [--cutoff X] [--implicit] [--no-events] [--goal]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
-// numerics.time_integration = implicit (the reference stays at its defaults). --goal: after each
+// numerics.time_integration = implicit (the reference stays at its defaults); --no-events: with
+// numerics.contact_events = false. --goal: after each
 // run, the issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric
 // solver at every output travel, in under 10 s wall) with the figures it rests on.
 //
@@ -78,6 +79,7 @@ struct Args {
   bool speed_setting = false;
   double per_length = 0.0, cutoff = 0.0;  // 0: the scene's (or the speed setting's)
   bool implicit = false;                  // --implicit: numerics.time_integration = implicit
+  bool no_events = false;                 // --no-events: numerics.contact_events = false
   bool goal = false;
   std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
@@ -87,7 +89,9 @@ Args parse(int argc, char** argv) {
   Args a;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--quick" || key == "--speed-setting" || key == "--goal" || key == "--implicit") {
+    if (key == "--quick" || key == "--speed-setting" || key == "--goal" || key == "--implicit" ||
+        key == "--no-events") {
+      if (key == "--no-events") a.no_events = true;
       if (key == "--quick") a.study = a.quick = true;
       if (key == "--implicit") a.implicit = true;
       if (key == "--speed-setting") a.speed_setting = true;
@@ -276,6 +280,7 @@ int main(int argc, char** argv) {
   if (args.per_length > 0.0) base.numerics.max_travel_increment_per_length = args.per_length;
   if (args.cutoff > 0.0) base.numerics.strain_rate_cutoff = args.cutoff;
   if (args.implicit) base.numerics.time_integration = vs::TimeIntegration::kImplicit;
+  if (args.no_events) base.numerics.contact_events = false;
   if (!args.friction.empty()) {
     for (auto& t : base.tools) {
       t.friction = args.friction == "sticking" ? std::numeric_limits<double>::infinity()

@@ -165,6 +165,8 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
   j["numerics"] = {{"thickness_points", n.thickness_points},
                    {"solver", name(n.solver)},
                    {"time_integration", name(n.time_integration)},
+                   {"implicit_theta", n.implicit_theta},
+                   {"contact_events", n.contact_events},
                    {"tolerance", n.tolerance},
                    {"max_iterations", n.max_iterations},
                    {"step_fraction", n.step_fraction},

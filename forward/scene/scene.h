@@ -140,6 +140,9 @@ struct NumericsSpec {
   // v_n + theta v_{n+1}): 1/2 trapezoidal (second order), 1 backward Euler (first order, damps
   // the stiffest modes completely).
   double implicit_theta = 0.5;
+  // Implicit update: end steps at contact events, as the explicit update must (false: a node that
+  // reaches a tool within a step touches it at the end of the step).
+  bool contact_events = true;
   double tolerance = 1e-6;                // relative velocity change and relative residual
   int max_iterations = 100;               // per step, before the step is cut back
   double step_fraction = 1.0;             // fraction of the contact-event step taken when far

@@ -288,6 +288,14 @@ std::vector<KeySpec> build_keys() {
            "", closed(0.5, 1),
            "Implicit update x_{n+1} = x_n + dt ((1 - theta) v_n + theta v_{n+1}): 0.5 trapezoidal "
            "(second order), 1 backward Euler (first order; damps the stiffest modes fully)."));
+  add(make(nu, "contact_events", KeyType::kBool,
+           bool_field<&numerics, &NumericsSpec::contact_events>(), "", Range{},
+           "Implicit update: end steps at contact events (heun always does). false: a node that "
+           "reaches a tool within a step touches it at the end of the step. That saves most "
+           "steps of a 3D mesh (every node touches at its own instant; ex4a n = 8, friction 0.2, "
+           "10 mm: 18 steps instead of 70, force within 0.25 %) but samples the moving contact "
+           "front at the steps: on ex1 (69 elements, 0.25 element lengths per step) the thickness "
+           "strain along the dome ripples by +-0.01."));
   add(make(nu, "tolerance", kFloat, float_field<&numerics, &NumericsSpec::tolerance>(), "",
            closed(1e-12, 0.1), "Relative velocity change and relative residual."));
   add(make(nu, "max_iterations", kInt, int_field<&numerics, &NumericsSpec::max_iterations>(), "",

@@ -121,7 +121,8 @@ double StepDriver<Stepper>::choose_dt(const Solved& from, double cap_factor) {
                                        scene_.numerics.max_strain_increment, from.max_rate);
   // Next contact event (paper eq. 53, any tool, any free node), looked for a little beyond the
   // cap so that the step fraction can approach it gradually.
-  if (scene_.numerics.time_integration == TimeIntegration::kImplicit && !options_.implicit_events)
+  if (scene_.numerics.time_integration == TimeIntegration::kImplicit &&
+      !scene_.numerics.contact_events)
     return cap;
   const double frac = scene_.numerics.step_fraction;
   const double horizon = cap / frac;

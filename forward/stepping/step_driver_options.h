@@ -44,13 +44,6 @@ struct StepDriverOptions {
   // elements, 0.25 element lengths per step): a third solve moves the force by <= 0.005 % and
   // the smallest thickness by 4e-5 mm, for 47 % more factorisations.
   int implicit_solves = 2;
-  // Implicit update: end steps at contact events (the explicit update must: it lags a moving
-  // contact front by a whole step). Off, a node that reaches a tool within a step touches it at
-  // the end of the step (the contact search puts it onto the surface), which in 3D saves most
-  // steps: every node of a 3D mesh touches at its own instant (measured: ex4a, n = 8, friction
-  // 0.2, to 10 mm: 70 steps with events, 18 without, force within 0.25 %). On ex1 the outputs
-  // stay smooth in the parameters (jitter 2e-8) either way.
-  bool implicit_events = false;
 
   // False with the reason if an option is out of range.
   bool IsValid(std::string* why) const;
