@@ -35,6 +35,6 @@ def table(name):
             print(s)
 
 
-for n in ("comparison.csv", "convergence.csv"):
+for n in ("comparison.csv", "convergence.csv", "normal_stress.csv"):
     print(f"\n### {n}")
     table(n)

@@ -184,6 +184,7 @@ void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
   double N0 = 0.0, N1 = 0.0, M0 = 0.0, M1 = 0.0;
   double phi = 0.0;
   const std::size_t np = rule.zeta.size();
+  const bool pressed = section.face_pressure.active();
   if (!want_k) out->point_rate.resize(np);
   if (tangent) {
     out->point_direction.resize(2 * np);
@@ -204,6 +205,15 @@ void axisym2_evaluate(const Axisym2Geometry& g, const Axisym2Section& section,
     M0 += (wmu * z) * Ad0;
     M1 += (wmu * z) * Ad1;
     phi += w * p.potential;
+    if (pressed) {  // sigma_33 = -p(zeta): both in-plane stresses shift (normal_stress.h)
+      const NormalStressTerm t = normal_stress_term(section.face_pressure.at(rule.zeta[k]), d0, d1);
+      const double ws = w * t.stress_shift_MPa;
+      N0 += ws;
+      N1 += ws;
+      M0 += ws * z;
+      M1 += ws * z;
+      phi += w * t.potential;
+    }
     if (want_k) {
       mu0 += wmu;
       mu1 += wmu * z;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "element/simpson.h"
+#include "material/normal_stress.h"
 #include "material/viscous_law.h"
 
 namespace vs {
@@ -51,6 +52,10 @@ struct Axisym2Section {
   // tangent uses instead of the current one (primal-dual Newton, material/flow_direction.h);
   // null: the current one (the consistent tangent).
   const double* flow_direction = nullptr;
+  // Through-thickness normal stress sigma_33 = -p(zeta) (material/normal_stress.h): the contact
+  // pressures on the faces, lower = zeta -h/2 (the side the element normal n = (-s, c) points
+  // away from). Zero (the default): plane stress.
+  FacePressure face_pressure = {};
 };
 
 enum class StiffnessKind { kSecant, kTangent, kNone };

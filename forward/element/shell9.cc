@@ -403,6 +403,7 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
   ops->flow.clear();
   ops->shear.clear();
   ops->frame.assign(static_cast<std::size_t>(nip), Mat3::Identity());
+  ops->shape.resize(static_cast<std::size_t>(nip));
   int rows = 0;
   auto add_shear = [&](const auto& Bs, double dV, double h_weight, int point) {
     ops->L.middleRows(rows, 2) = Bs;
@@ -415,6 +416,8 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
     for (int i = 0; i < mr.n; ++i, ++ip) {
       const double r = mr.x[i], s = mr.x[j];
       const Shape9 sh = lagrange9(r, s);
+      for (int a = 0; a < 9; ++a)
+        ops->shape[static_cast<std::size_t>(ip)][static_cast<std::size_t>(a)] = sh.N(a);
       const SurfacePoint sp = surface_point(g, sh);
       if (mitc) {
         mitc9_assumed_poly(ws.tying, r, s, n, &ws.assumed);
@@ -432,7 +435,7 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
         // Resultants per unit length: dz = h/2 dt, z = t h/2 (weights of [-1, 1] halved).
         const double dz = 0.5 * sp.h * wt;
         ops->L.middleRows(rows, 3) = Bl.topRows<3>();
-        ops->flow.push_back({rows, ip, dV, dz, dz * 0.5 * t * sp.h});
+        ops->flow.push_back({rows, ip, dV, dz, dz * 0.5 * t * sp.h, 0.5 * t});
         rows += 3;
         if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
         if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
@@ -493,7 +496,14 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   for (std::size_t f = 0; f < ops.flow.size(); ++f) {
     const Shell9Operators::FlowRow& fr = ops.flow[f];
     const Vec3 d = ws.rate.segment<3>(fr.row);
-    const PointLaw p = evaluate_point(mat, state, static_cast<int>(f), d, kind, tangent_weight);
+    PointLaw p = evaluate_point(mat, state, static_cast<int>(f), d, kind, tangent_weight);
+    if (state.face_pressure) {  // sigma_33 = -p(zeta): the normal stresses shift (normal_stress.h)
+      const NormalStressTerm t =
+          normal_stress_term(state.face_pressure[fr.point].at(fr.zeta), d(0), d(1));
+      p.stress(0) += t.stress_shift_MPa;
+      p.stress(1) += t.stress_shift_MPa;
+      p.potential += t.potential;
+    }
     out->point_rate[f] = p.rate;
     ws.gen.segment<3>(fr.row) = fr.dV * p.stress;
     if (want_k) ws.DL.middleRows(fr.row, 3).noalias() = (fr.dV * p.D) * ops.L.middleRows(fr.row, 3);

@@ -18,11 +18,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "element/shell9_kinematics.h"
 #include "element/simpson.h"
 #include "material/hill_plane_stress.h"
+#include "material/normal_stress.h"
 
 namespace vs::shell3d {
 
@@ -75,6 +77,9 @@ struct Shell9State {
   const Shell9FlowDirection* dual_anchor = nullptr;
   const Vec3* dual_given = nullptr;
   Shell9FlowDirection* dual_record = nullptr;
+  // Through-thickness normal stress sigma_33 = -p(zeta) (material/normal_stress.h): the face
+  // pressures at each in-plane point (lower face = t = -1, opposite to e3); null: plane stress.
+  const FacePressure* face_pressure = nullptr;
 };
 
 enum class Shell9Stiffness { kSecant, kTangent, kNone };
@@ -109,6 +114,7 @@ struct Shell9Operators {
     int row = 0;    // its 3 in-plane rows start here
     int point = 0;  // in-plane point (resultants)
     double dV = 0.0, dz = 0.0, arm = 0.0;  // volume weight; h/2 dt and z dz (resultants)
+    double zeta = 0.0;                     // z / h = t / 2 of the thickness point
   };
   struct ShearRow {
     int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
@@ -124,6 +130,7 @@ struct Shell9Operators {
   std::vector<FlowRow> flow;
   std::vector<ShearRow> shear;
   std::vector<Mat3> frame;  // local frame at the middle thickness point of each in-plane point
+  std::vector<std::array<double, 9>> shape;  // shape functions N_a at each in-plane point
   std::vector<DrillNode> drill;
 };
 

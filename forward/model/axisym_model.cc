@@ -87,6 +87,34 @@ AxisymState AxisymModel::initial_state() const {
 
 void AxisymModel::place_tools(const AxisymState& s) {
   for (std::size_t t = 0; t < tools_.size(); ++t) tools_[t].set_offset(s.tool_offset[t]);
+  if (scene_.numerics.normal_stress == NormalStress::kContact) freeze_face_pressures(s);
+}
+
+void AxisymModel::freeze_face_pressures(const AxisymState& s) {
+  const int ne = num_elements(), nn = num_nodes();
+  std::vector<double> area(nn, 0.0);  // nodal areas, full 360 degrees [mm^2]
+  std::vector<Eigen::Vector2d> normal(ne);
+  for (int e = 0; e < ne; ++e) {
+    const Axisym2Geometry g = geometry(s, e);
+    const double l = g.length();
+    const double half = std::numbers::pi * g.mid_radius() * l;
+    area[e] += half;
+    area[e + 1] += half;
+    normal[e] = Eigen::Vector2d(-(g.zb - g.za) / l, (g.rb - g.ra) / l);
+  }
+  face_pressure_.assign(ne, FacePressure{});
+  for (int i = 0; i < nn; ++i) {
+    const NodeContact& c = s.contact[i];
+    if (c.tool < 0 || area[i] <= 0.0) continue;
+    const double p_tool = std::max(c.normal_force_N, 0.0) / area[i];
+    const double p_other = std::max(c.holder_force_N + c.squeeze_force_N, 0.0) / area[i];
+    for (int e : {i - 1, i}) {
+      if (e < 0 || e >= ne) continue;
+      const double dir = c.normal.dot(normal[e]);
+      add_face_pressure(dir, 0.5 * p_tool, &face_pressure_[e]);
+      add_face_pressure(-dir, 0.5 * p_other, &face_pressure_[e]);
+    }
+  }
 }
 
 void AxisymModel::freeze_material(const std::vector<double>& eps_bar, double dt_predicted) {
@@ -390,6 +418,7 @@ void AxisymModel::evaluate_elements(const AxisymState& s, const Eigen::VectorXd&
   for (int e = 0; e < num_elements(); ++e) {
     Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
     if (dual) sec.flow_direction = flow_directions->data() + 2 * np * e;
+    if (!face_pressure_.empty()) sec.face_pressure = face_pressure_[e];
     const Vec6 d = v.segment<6>(3 * e);
     // Split: weight 0, eo.stiffness is the secant matrix and eo.tangent_part the rest.
     axisym2_evaluate(geometry(s, e), sec, rule_, law_, d, kind, &eo, split ? 0.0 : weight, split);

@@ -127,7 +127,21 @@ class AxisymModel {
   AxisymState initial_state() const;
 
   // Places the tools at the state's offsets (tools are shared, positions come from the state).
+  // With numerics.normal_stress = contact it also freezes the face pressures of the elements for
+  // the solves that follow (freeze_face_pressures): the drivers call it at the start of every
+  // solve and never inside one.
   void place_tools(const AxisymState& s);
+
+  // Through-thickness normal stress (material/normal_stress.h): each element's face pressures
+  // from the contact forces of s, held until the next call. A contact node's pressure is its
+  // normal reaction (NodeContact::normal_force_N: the lagged value, which at the start of a solve
+  // is the last converged state's) over its nodal area, the half mid-surface areas 2 pi r_m L / 2
+  // of its elements (the consistent nodal area of a uniform pressure on the one-point element);
+  // a holder's or squeezing tool's force (holder_force_N, squeeze_force_N) presses the other face.
+  // An element gets the mean of its two nodes' pressures on each face; the face a tool touches is
+  // the lower one if the tool's normal points along the element normal (-s, c).
+  void freeze_face_pressures(const AxisymState& s);
+  const std::vector<FacePressure>& face_pressures() const { return face_pressure_; }
 
   // Per-step material data: yield stress sigma_y(eps_bar) and hardening viscosity H(eps_bar) dt
   // per point, shear penalty per element. The solve then sees the flow stress at the end of the
@@ -279,6 +293,7 @@ class AxisymModel {
   std::vector<std::vector<double>> sigma_y_;              // per element, per point
   std::vector<std::vector<double>> hardening_viscosity_;  // per element, per point
   std::vector<double> shear_viscosity_;                   // per element
+  std::vector<FacePressure> face_pressure_;               // per element; empty: plane stress
 };
 
 }  // namespace vs

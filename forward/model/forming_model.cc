@@ -148,6 +148,41 @@ FormingState FormingModel::initial_state() const {
 
 void FormingModel::place_tools(const FormingState& s) {
   for (std::size_t t = 0; t < tools_.size(); ++t) tools_[t].set_offset(s.tool_offset[t]);
+  if (scene_.numerics.normal_stress == NormalStress::kContact) freeze_face_pressures(s);
+}
+
+void FormingModel::freeze_face_pressures(const FormingState& s) {
+  const std::vector<double> area = lumped_areas(s.x);
+  face_pressure_.assign(static_cast<std::size_t>(num_nodes()), FacePressure{});
+  for (int i = 0; i < num_nodes(); ++i) {
+    const NodeContact3& c = s.contact[static_cast<std::size_t>(i)];
+    if (c.tool < 0 || area[static_cast<std::size_t>(i)] <= 0.0) continue;
+    const double a = area[static_cast<std::size_t>(i)];
+    const double dir = c.normal.dot(s.director[static_cast<std::size_t>(i)]);
+    FacePressure& f = face_pressure_[static_cast<std::size_t>(i)];
+    add_face_pressure(dir, std::max(c.normal_force_N, 0.0) / a, &f);
+    add_face_pressure(-dir, std::max(c.holder_force_N, 0.0) / a, &f);
+  }
+}
+
+const FacePressure* FormingModel::element_face_pressure(int e) const {
+  if (face_pressure_.empty()) return nullptr;
+  const auto& el = mesh_.elements[static_cast<std::size_t>(e)];
+  bool any = false;
+  for (int a = 0; a < 9; ++a) any = any || face_pressure_[static_cast<std::size_t>(el[a])].active();
+  if (!any) return nullptr;
+  const Shell9Operators& ops = operators_[static_cast<std::size_t>(e)];
+  thread_local std::vector<FacePressure> points;
+  points.assign(ops.shape.size(), FacePressure{});
+  for (std::size_t p = 0; p < ops.shape.size(); ++p) {
+    for (int a = 0; a < 9; ++a) {
+      const FacePressure& n = face_pressure_[static_cast<std::size_t>(el[a])];
+      const double w = ops.shape[p][static_cast<std::size_t>(a)];
+      points[p].lower_MPa += w * n.lower_MPa;
+      points[p].upper_MPa += w * n.upper_MPa;
+    }
+  }
+  return points.data();
 }
 
 void FormingModel::freeze_material(const std::vector<double>& eps_bar, double dt_predicted) {
@@ -401,6 +436,7 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   Shell9State st;
   st.sigma_y = sigma_y_.data() + fp;
   st.hardening_viscosity = hardening_viscosity_.data() + fp;
+  st.face_pressure = element_face_pressure(e);
   if (kind == Shell9Stiffness::kTangent) {
     st.dual_record = dual_[2].points.data() + fp;
     if (dual_mode_ == DualMode::kAnchor) st.dual_anchor = dual_[0].points.data() + fp;
@@ -618,6 +654,7 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
     Shell9State st;
     st.sigma_y = sigma_y_.data() + fp;
     st.hardening_viscosity = hardening_viscosity_.data() + fp;
+    st.face_pressure = element_face_pressure(e);
     Shell9Output out;
     shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
                     &out);

@@ -122,7 +122,20 @@ class FormingModel {
   const std::vector<int>& neighbours(int node) const { return neighbours_[node]; }
 
   FormingState initial_state() const;
+  // Places the tools at the state's offsets; with numerics.normal_stress = contact it also
+  // freezes the nodal face pressures (freeze_face_pressures) for the solves that follow (the
+  // driver calls it at the start of every solve, never inside one).
   void place_tools(const FormingState& s);
+  // Through-thickness normal stress (material/normal_stress.h), as
+  // AxisymModel::freeze_face_pressures: a contact node's pressure is its lagged normal reaction
+  // (NodeContact3::normal_force_N; at the start of a solve the last converged state's) over its
+  // lumped area integral N_i dA (the consistent nodal area of a uniform pressure), on the lower
+  // face (t = -1) if the tool's normal into the sheet points along the node's director, else on
+  // the upper face; a force holder's share (holder_force_N) presses the other face. The element
+  // interpolates the nodal pressures to its in-plane points with its shape functions.
+  void freeze_face_pressures(const FormingState& s);
+  // Nodal face pressures (empty: plane stress).
+  const std::vector<FacePressure>& face_pressures() const { return face_pressure_; }
 
   // Per-step material data (as AxisymModel::freeze_material): yield stress and hardening
   // viscosity theta H dt per flow point, shear penalty viscosity per element.
@@ -249,6 +262,10 @@ class FormingModel {
   // Frozen per step.
   std::vector<double> sigma_y_, hardening_viscosity_;  // per element * flow point
   std::vector<double> shear_viscosity_;                // per element
+  std::vector<FacePressure> face_pressure_;            // per node; empty: plane stress
+  // Face pressures at the in-plane points of element e from the nodal ones; null if none of its
+  // nodes is pressed. The buffer is per thread.
+  const FacePressure* element_face_pressure(int e) const;
   // The friction terms of the last evaluate() (refresh_friction), per node in contact.
   struct FrictionTerm {
     int dof = 0;  // first tangential dof

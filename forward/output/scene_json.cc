@@ -101,6 +101,16 @@ const char* name(TimeIntegration t) {
   return "heun";
 }
 
+const char* name(NormalStress n) {
+  switch (n) {
+    case NormalStress::kNone:
+      return "none";
+    case NormalStress::kContact:
+      return "contact";
+  }
+  return "none";
+}
+
 Json tool_json(const ToolSpec& t) {
   Json j;
   j["name"] = t.name;
@@ -175,7 +185,8 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                    {"max_strain_increment", n.max_strain_increment},
                    {"strain_rate_cutoff", n.strain_rate_cutoff},
                    {"friction_regularisation", n.friction_regularisation},
-                   {"max_cutbacks", n.max_cutbacks}};
+                   {"max_cutbacks", n.max_cutbacks},
+                   {"normal_stress", name(n.normal_stress)}};
 
   const FormingLimitSpec& fl = s.forming_limit;
   j["forming_limit"] = {{"model", name(fl.model)},

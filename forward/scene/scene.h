@@ -126,6 +126,12 @@ enum class TimeIntegration {
   kImplicit,
 };
 
+// Through-thickness normal stress sigma_33 (experiments/08_continuum_reference, section 8).
+enum class NormalStress {
+  kNone,     // plane stress (sigma_33 = 0), the paper's shell
+  kContact,  // sigma_33 = -p(zeta), linear from the contact pressure on each face to the other
+};
+
 // Strain evaluation of the 9-node shell (geometry = shell3d; forward/shell3d/shell9.h).
 enum class ShellElementRule {
   kMitc9,           // MITC9 assumed covariant strains (Bucalem-Bathe): no membrane locking
@@ -158,6 +164,7 @@ struct NumericsSpec {
   double friction_regularisation = 1e-4;  // Coulomb arctan velocity, relative to punch speed
   int max_cutbacks = 8;                   // step halvings before the run stops
   ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
+  NormalStress normal_stress = NormalStress::kNone;
 };
 
 // Forming-limit curve (FLC) of the forming-limit diagram: outputs only (fld.svg, the margin per

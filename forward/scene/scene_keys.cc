@@ -349,6 +349,13 @@ std::vector<KeySpec> build_keys() {
              "9-node shell strains (shell3d only): mitc9 assumed strains (no membrane locking) or "
              "the paper's selective rule (in-plane 3x3, transverse shear 2x2)."))
       .geometry = "shell3d";
+  add(choice(nu, "normal_stress", enum_field<&numerics, &NumericsSpec::normal_stress>(),
+             {"none", "contact"},
+             "Through-thickness normal stress: none = plane stress (the paper's shell); contact = "
+             "sigma_33 linear from minus the contact pressure on a touched face (nodal normal "
+             "reaction / nodal area, lagged: the converged value at the start of each solve) to "
+             "the other face, which lowers the in-plane stresses by the local pressure "
+             "(experiments/08_continuum_reference, section 8)."));
 
   // [forming_limit]
   const std::string_view fl = "forming_limit";
