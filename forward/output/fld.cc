@@ -129,6 +129,9 @@ const FldPoint* least_margin_point(const std::vector<FldPoint>& points) {
 }
 
 std::string fld_points_csv(const std::vector<FldPoint>& points) {
+  // Without a forming-limit curve (model "none") or where a point has no minor strain, the FLC
+  // columns are empty: no written file carries NaN (issue 16).
+  auto flc_number = [](double v) { return std::isfinite(v) ? format_number(v) : std::string(); };
   std::string out =
       "element,x0_mm,y0_mm,r0_mm,r_mm,eps_major,eps_minor,eps_thickness,thinning_percent,"
       "eps_effective,flc_eps_major,flc_margin,flc_zone\n";
@@ -138,7 +141,7 @@ std::string fld_points_csv(const std::vector<FldPoint>& points) {
         format_number(p.y0_mm), format_number(p.r0_mm), format_number(p.r_mm),
         format_number(p.eps_major), format_number(p.eps_minor), format_number(p.eps_thickness),
         format_number(p.thinning_percent), format_number(p.eps_effective),
-        format_number(p.flc_eps_major), format_number(p.flc_margin), forming_zone_name(p.zone));
+        flc_number(p.flc_eps_major), flc_number(p.flc_margin), forming_zone_name(p.zone));
   }
   return out;
 }

@@ -240,7 +240,8 @@ std::vector<KeySpec> build_keys() {
            "mm", open_above(0), "Flat-punch nose radius (< radius_mm) or die shoulder radius."))
       .applies_to = {"flat_punch", "die"};
   add(make("tool", "friction", kFloat, float_field<&tool, &ToolSpec::friction>(), "",
-           closed(0, kInf), "Coulomb coefficient with the sheet; inf or \"sticking\" = no slip."))
+           closed(0, kInf),
+           "Coulomb coefficient with the sheet, at most 2; inf or \"sticking\" = no slip."))
       .sticking_alias = true;
   add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N", open_above(0),
            "Blank holder with a prescribed total (360 degree) force, shared over the flange nodes "

@@ -15,6 +15,10 @@
 
 namespace vs {
 
+// Largest finite Coulomb coefficient a scene accepts (larger: use "sticking"). Sheet forming sees
+// 0-0.3 with lubricant and up to ~0.6-0.8 dry; 2 leaves room for deliberate studies.
+inline constexpr double kMaxCoulombCoefficient = 2.0;
+
 enum class KeyType {
   kFloat,  // TOML float or integer (converted)
   kInt,    // TOML integer only
@@ -71,7 +75,8 @@ struct KeySpec {
   // empty = every variant.
   std::vector<std::string_view> applies_to;
   bool required = false;        // no default: must be given (where it applies)
-  bool sticking_alias = false;  // also accepts the string "sticking" (= +inf)
+  bool sticking_alias = false;  // also accepts the string "sticking" (= +inf); finite values
+                                // at most kMaxCoulombCoefficient
   bool identifier = false;      // string restricted to [A-Za-z0-9_]+
   // The only model geometry ("axisymmetric", "shell3d") that uses the key; empty = every one.
   // Setting the key in a scene of another geometry is an error (load_scene.cc).

@@ -200,6 +200,7 @@ TEST(FuzzInput, AbsurdSizesAndStepCountsAreRefusedWithTheReason) {
       {"[process]\npunch_travel_mm = 1e6\n", "shorten process.punch_travel_mm"},
       {"[blank]\nelements = 2000\n[process]\npunch_travel_mm = 100\n",
        "more than the 1e+08 allowed for axisymmetric runs"},
+      {"friction = 1e6\n", "use \"sticking\""},  // continues the punch's [[tool]] table
   };
   for (const auto& c : cases) {
     const std::string message = testing::scene_error(
