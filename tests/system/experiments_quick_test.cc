@@ -243,8 +243,7 @@ TEST(ExperimentsQuick, ImplicitHalfThetaIsSecondOrderInTheStep) {
     EXPECT_FALSE(r.steps.empty());
     if (r.steps.empty()) return std::pair<double, double>{0.0, 0.0};
     EXPECT_NEAR(r.steps.back().punch_travel_mm, 16.0, 1e-9);
-    return std::pair<double, double>{r.steps.back().punch_force_N,
-                                     r.steps.back().min_thickness_mm};
+    return std::pair<double, double>{r.steps.back().punch_force_N, r.steps.back().min_thickness_mm};
   };
   const auto ref = run("heun", "0.5", "0.0125");
   const auto ref_half = run("heun", "0.5", "0.00625");
