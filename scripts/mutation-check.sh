@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Mutation check (issue 18): plants plausible bugs, one at a time, at the formulas that matter in
 # a scratch copy of the tree, rebuilds, runs the CI tests and reports which tests kill each one.
-# Not part of CI (about 30 min on a 2-core machine after the first build of the scratch copy).
+# Not part of CI. On the shared 2-core machine, after the first build of the scratch copy: about
+# 1-1.5 min per mutation with every failing test named, except those that break a Newton tangent
+# (10+ min each); with MUT_FAIL_FAST=1 all of them in ~10 min (docs/mutation-check.md).
 #
 #   scripts/mutation-check.sh                 # every mutation
+#   MUT_FAIL_FAST=1 scripts/mutation-check.sh # every mutation, the first killing test only
 #   scripts/mutation-check.sh hill_1p2r ...   # the named ones (develop a test against one)
 #   scripts/mutation-check.sh --list          # the list
 #
