@@ -208,6 +208,66 @@ TEST(Calibrate, LinearModelCovarianceIsExact) {
   EXPECT_EQ(result.uncertainty.quantile_kind, "student_t(28)");
 }
 
+// A sigma per point (a measurement file's sigma column) makes the fit weighted least squares:
+// residual (model - y_i) / sigma_i, so that with A = [1, 1000 t] the optimum is the closed form
+// x = (A^T W A)^-1 A^T W y, W = diag(1 / sigma_i^2), and Cov = s^2 (A^T W A)^-1 with
+// s^2 = r^T W r / (m - p). The first half of the points is 16 times more precise than the
+// second; the weighted estimate then differs from the unweighted one and from one weighted by
+// 1 / sigma^4 by many times the tolerance (checked), so a wrong power of sigma cannot pass.
+TEST(Calibrate, LinearModelWithPointSigmasIsWeightedLeastSquares) {
+  const fs::path dir = scratch_dir();
+  const fs::path scene_file = write_scene(dir);
+  Measurement m;
+  m.name = "load";
+  m.kind = MeasurementKind::kLoadTravel;
+  GaussianNoise noise(11);
+  constexpr int kPoints = 30;
+  for (int i = 1; i <= kPoints; ++i) {
+    const double sigma = i <= 15 ? 5.0 : 80.0;
+    m.x.push_back(i);
+    m.point_sigma.push_back(sigma);
+    m.y.push_back(480.0 + 1000.0 * 0.15 * i + sigma * noise.next());
+  }
+  CalibrationConfig config;
+  config.scenes = {{"scene", scene_file.string(), "test"}};
+  config.parameters = {param("material.hardening.K_MPa", 400.0, 1.0, 2000.0, 100.0),
+                       param("tool.punch.friction", 0.3, 0.0, 1.0, 0.1)};
+  config.data = {data_set(m, 0.0)};
+  const auto result = calibrate(config, quiet(), LinearFake{});
+  ASSERT_TRUE(result.uncertainty_available);
+
+  Eigen::MatrixXd a(kPoints, 2);
+  Eigen::VectorXd y(kPoints), w(kPoints);
+  for (int i = 0; i < kPoints; ++i) {
+    a.row(i) << 1.0, 1000.0 * (i + 1);
+    y[i] = m.y[i];
+    w[i] = 1.0 / (m.point_sigma[i] * m.point_sigma[i]);
+  }
+  auto weighted_fit = [&](const Eigen::VectorXd& weights) {
+    const Eigen::MatrixXd atw = a.transpose() * weights.asDiagonal();
+    return Eigen::VectorXd((atw * a).ldlt().solve(atw * y));
+  };
+  const Eigen::VectorXd x_exact = weighted_fit(w);
+  const Eigen::VectorXd x_unweighted = weighted_fit(Eigen::VectorXd::Ones(kPoints));
+  const Eigen::VectorXd x_fourth = weighted_fit(w.cwiseProduct(w));
+  const Eigen::VectorXd x = result.free_values();
+  for (int k = 0; k < 2; ++k) {
+    const double tol = 1e-6 * std::abs(x_exact[k]);
+    EXPECT_GT(std::abs(x_unweighted[k] - x_exact[k]), 100.0 * tol);
+    EXPECT_GT(std::abs(x_fourth[k] - x_exact[k]), 100.0 * tol);
+    EXPECT_NEAR(x[k], x_exact[k], tol) << config.parameters[k].address;
+  }
+  const Eigen::VectorXd r = a * x - y;
+  const double s2 = r.dot(w.cwiseProduct(r)) / (kPoints - 2);
+  const Eigen::MatrixXd cov = (a.transpose() * w.asDiagonal() * a).inverse() * s2;
+  for (int p = 0; p < 2; ++p) {
+    for (int q = 0; q < 2; ++q) {
+      EXPECT_NEAR(result.uncertainty.covariance(p, q), cov(p, q),
+                  1e-6 * std::sqrt(cov(p, p) * cov(q, q)));
+    }
+  }
+}
+
 TEST(Calibrate, ParameterTheDataCannotSeeIsReportedPoorlyDetermined) {
   const fs::path dir = scratch_dir();
   const Truth truth;

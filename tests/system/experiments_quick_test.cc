@@ -217,6 +217,64 @@ TEST(ExperimentsQuick, ImplicitUpdateIsSmoothWhereHeunIsUnstable) {
   EXPECT_GT(heun.roughness, 2.0 * implicit.roughness);
 }
 
+// The implicit update with theta = 1/2 moves the geometry with the mean of the start and end
+// rates (the trapezoidal rule, second order in the step); theta = 1 with the end rates only
+// (backward Euler, first order). At the same step, 0.2 element lengths, the trapezoidal error
+// against a converged Heun run (0.0125 element lengths) must be a small fraction of backward
+// Euler's: a second-order error C2 dt^2 against a first-order C1 dt whose own halving (0.2 ->
+// 0.1 l) shows it is in its asymptotic range. The bound 1/4 is what a second-order method gives
+// at the step where halving it roughly halves the first-order error; an update that moved the
+// geometry with the end rates whatever theta says is backward Euler and fails it with a ratio
+// near 1. Measured (ex1, 24 elements, friction 0.1, to 16 mm): force error 0.2 N (theta 1/2) and
+// 127 N (theta 1); thinnest-element error 1.7e-4 mm and 2.9e-3 mm; backward Euler at 0.1 l
+// 58 N, 1.2e-3 mm; the reference's own step error (0.0125 -> 0.00625 l) 0.3 N, 1.4e-5 mm.
+TEST(ExperimentsQuick, ImplicitHalfThetaIsSecondOrderInTheStep) {
+  auto run = [](const char* integration, const char* theta, const char* per_length) {
+    const vs::RunResult r = run_ex1({{"blank.elements", "24"},
+                                     {"process.punch_travel_mm", "16"},
+                                     {"process.output_travels_mm", "[16.0]"},
+                                     {"numerics.tolerance", "1e-10"},
+                                     {"numerics.max_travel_increment_mm", "5"},
+                                     {"numerics.max_travel_increment_per_length", per_length},
+                                     {"tool.punch.friction", "0.1"},
+                                     {"numerics.time_integration", integration},
+                                     {"numerics.implicit_theta", theta}});
+    EXPECT_TRUE(r.completed()) << r.message;
+    EXPECT_FALSE(r.steps.empty());
+    if (r.steps.empty()) return std::pair<double, double>{0.0, 0.0};
+    EXPECT_NEAR(r.steps.back().punch_travel_mm, 16.0, 1e-9);
+    return std::pair<double, double>{r.steps.back().punch_force_N, r.steps.back().min_thickness_mm};
+  };
+  const auto ref = run("heun", "0.5", "0.0125");
+  const auto ref_half = run("heun", "0.5", "0.00625");
+  const auto trapezoid = run("implicit", "0.5", "0.2");
+  const auto backward = run("implicit", "1", "0.2");
+  const auto backward_half = run("implicit", "1", "0.1");
+  auto err = [&](std::pair<double, double> a) {
+    return std::pair<double, double>{std::abs(a.first - ref.first),
+                                     std::abs(a.second - ref.second)};
+  };
+  const auto e_ref = std::pair<double, double>{std::abs(ref_half.first - ref.first),
+                                               std::abs(ref_half.second - ref.second)};
+  const auto e_tr = err(trapezoid), e_be = err(backward), e_be_half = err(backward_half);
+  fmt::print(
+      "error at 0.2 l: theta 1/2 {:.2f} N, {:.2e} mm; theta 1 {:.2f} N, {:.2e} mm (0.1 l: {:.2f} "
+      "N, {:.2e} mm); reference {:.2f} N, {:.2e} mm\n",
+      e_tr.first, e_tr.second, e_be.first, e_be.second, e_be_half.first, e_be_half.second,
+      e_ref.first, e_ref.second);
+  // Backward Euler's error is resolved (far above the reference's) and first order
+  EXPECT_GT(e_be.first, 20.0 * e_ref.first);
+  EXPECT_GT(e_be.second, 20.0 * e_ref.second);
+  // (halving ratio below 2^1.5, the geometric midpoint between first order, 2, and second, 4).
+  EXPECT_GT(e_be.first / e_be_half.first, 1.5);
+  EXPECT_LT(e_be.first / e_be_half.first, std::pow(2.0, 1.5));
+  EXPECT_GT(e_be.second / e_be_half.second, 1.5);
+  EXPECT_LT(e_be.second / e_be_half.second, std::pow(2.0, 1.5));
+  // The trapezoidal rule's is a small fraction of it.
+  EXPECT_LT(e_tr.first, 0.25 * e_be.first);
+  EXPECT_LT(e_tr.second, 0.25 * e_be.second);
+}
+
 #ifdef VS_HAVE_SHELL3D
 // 05_shell3d in small (the study's --quick form, experiments/common/shell3d_study.h): the quarter
 // disc of example 4a, punch friction 0.2, to 2 mm at n = 4 (48 elements), against its
