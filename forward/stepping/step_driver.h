@@ -206,14 +206,18 @@ bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solv
     Stepper& g;
     ~Uncouple() { g.couple_geometry(nullptr, 0.0); }
   } uncouple{g_};
+  const double theta = scene_.numerics.implicit_theta;
   Solved previous = from;  // the iterate whose velocity moves the geometry
   for (int k = 0; k < options_.implicit_solves; ++k) {
-    const double theta = scene_.numerics.implicit_theta;
     const Solved moving = g_.blend(from, previous, theta);
     g_.start_from(previous, to);
-    if (!advance(moving, dt, &to->state, why)) return false;
-    if (k > 0) g_.attach_touching(previous.state, &to->state, holds_);
-    if (!g_.update_thickness(to->state, why)) return false;
+    if (!advance(moving, dt, &to->state, why)) return false;  // (thickness included)
+    if (k > 0) {
+      // Nodes the previous solve found touching touch here too; attaching moves them, so the
+      // thickness is recomputed.
+      g_.attach_touching(previous.state, &to->state, holds_);
+      if (!g_.update_thickness(to->state, why)) return false;
+    }
     g_.couple_geometry(&previous, theta * dt);
     if (!g_.solve(to, dt, &g_.eps_bar(from.state), holds_, why)) return false;
     if (k + 1 < options_.implicit_solves) previous = *to;
