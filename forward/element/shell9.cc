@@ -308,6 +308,67 @@ Basis basis_at(const SurfacePoint& p, double t) {
   return b;
 }
 
+// Natural-coordinate increments (dr, ds) of a unit step along the initial RD at a point of the
+// initial mid-surface: dX = G_r dr + G_s ds = RD0 in the least-squares sense (exact for RD0 in
+// the tangent plane): (G^T G) c = G^T RD0 with G = [G_r, G_s].
+Eigen::Vector2d rd_natural(const Shell9Geometry& g, const Shape9& sh) {
+  Vec3 Gr = Vec3::Zero(), Gs = Vec3::Zero();
+  for (int a = 0; a < 9; ++a) {
+    Gr += sh.dr(a) * g.x_initial[static_cast<std::size_t>(a)];
+    Gs += sh.ds(a) * g.x_initial[static_cast<std::size_t>(a)];
+  }
+  Eigen::Matrix2d M;
+  M << Gr.dot(Gr), Gr.dot(Gs), Gr.dot(Gs), Gs.dot(Gs);
+  return M.inverse() * Eigen::Vector2d(Gr.dot(g.rd_initial), Gs.dot(g.rd_initial));
+}
+
+// The quadratic form of the point law at a flow point, in the form of hill_plane_stress.h:
+// e^2 = d . a / 3 with a = 3 g (g = d(e^2/2)/dd), stress mu a, secant mu M with M = 3 dg/dd.
+// Normal anisotropy: a = A d, M = A. Planar Hill 1948: the same with the rotated A
+// (planar_anisotropy.h). Yld2000-2d: g = T^T e m(T d), M = 3 T^T H T from the local solve
+// (dual_potential.h), T the point's rate rotation (plane_stress_axes.h).
+struct PointForm {
+  Vec3 a;
+  Mat3 M;
+  double e_squared;
+};
+
+PointForm point_form(const Shell9Material& mat, const Shell9Operators::FlowRow& fr, const Vec3& d) {
+  PointForm f;
+  if (mat.planar == nullptr) {
+    f.M = mat.law->A();
+  } else {
+    const MaterialAxes axes(fr.rd_cos, fr.rd_sin);
+    const PlaneMatrix& T = axes.rate_rotation();
+    if (mat.planar->quadratic) {
+      f.M = T.transpose() * mat.planar->A * T;
+    } else {
+      const DualPoint dual = mat.planar->yield->dual(T * d);
+      f.a = T.transpose() * ((3.0 * dual.rate) * dual.direction);
+      f.M = 3.0 * (T.transpose() * dual.hessian * T);
+      f.e_squared = dual.rate * dual.rate;
+      return f;
+    }
+  }
+  f.a = f.M * d;
+  f.e_squared = std::max(d.dot(f.a) / 3.0, 0.0);
+  return f;
+}
+
+}  // namespace
+
+double shell9_dual_norm_squared(const Shell9Material& mat, const Shell9Operators::FlowRow& fr,
+                                const Vec3& n) {
+  if (mat.planar == nullptr) return mat.law->dual_norm_squared(n);
+  const MaterialAxes axes(fr.rd_cos, fr.rd_sin);
+  const PlaneVector nm = axes.stress_to_material(n);
+  if (mat.planar->quadratic) return nm.dot(mat.planar->P * nm);
+  const double sb = mat.planar->yield->effective_stress(nm);
+  return sb * sb;
+}
+
+namespace {
+
 struct PointLaw {
   Vec3 stress;
   Mat3 D;
@@ -315,8 +376,9 @@ struct PointLaw {
   double rate;
 };
 
-PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int flow_index,
-                        const Vec3& d, Shell9Stiffness kind, double tangent_weight) {
+PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st,
+                        const Shell9Operators::FlowRow& fr, int flow_index, const Vec3& d,
+                        Shell9Stiffness kind, double tangent_weight) {
   PointLaw p;
   if (!mat.viscous) {
     const double nu = mat.poisson, f = mat.young / (1.0 - nu * nu);
@@ -329,9 +391,11 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int fl
   const double sy = st.sigma_y ? st.sigma_y[flow_index] : 0.0;
   const double hv = st.hardening_viscosity ? st.hardening_viscosity[flow_index] : 0.0;
   const HillPlaneStressLaw& law = *mat.law;
-  const Mat3& A = law.A();
-  const Vec3 Ad = A * d;
-  const InPlanePoint ip = law.evaluate_scaled(sy, hv, Ad, std::max(d.dot(Ad) / 3.0, 0.0));
+  // A and Ad of the normal-anisotropy law, or their per-point forms (point_form).
+  const PointForm form = point_form(mat, fr, d);
+  const Mat3& A = form.M;
+  const Vec3& Ad = form.a;
+  const InPlanePoint ip = law.evaluate_scaled(sy, hv, Ad, form.e_squared);
   p.stress = ip.stress;
   p.potential = ip.potential;
   p.rate = ip.rate;
@@ -351,7 +415,7 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st, int fl
       const Shell9FlowDirection& a = st.dual_anchor[flow_index];
       const Vec3 dd = d - a.d;
       n = n_full = a.m + (A * dd / 3.0 - a.n * a.m.dot(dd)) / a.eh;
-      const double norm2 = law.dual_norm_squared(n);
+      const double norm2 = shell9_dual_norm_squared(mat, fr, n);
       if (norm2 > 1.0) n /= std::sqrt(norm2);
     }
     rec.n = n;
@@ -419,6 +483,8 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
       for (int a = 0; a < 9; ++a)
         ops->shape[static_cast<std::size_t>(ip)][static_cast<std::size_t>(a)] = sh.N(a);
       const SurfacePoint sp = surface_point(g, sh);
+      const Eigen::Vector2d rd_nat =
+          g.has_material_axes ? rd_natural(g, sh) : Eigen::Vector2d::UnitX();
       if (mitc) {
         mitc9_assumed_poly(ws.tying, r, s, n, &ws.assumed);
       } else {
@@ -436,6 +502,14 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
         const double dz = 0.5 * sp.h * wt;
         ops->L.middleRows(rows, 3) = Bl.topRows<3>();
         ops->flow.push_back({rows, ip, dV, dz, dz * 0.5 * t * sp.h, 0.5 * t});
+        if (g.has_material_axes) {
+          // The convected RD at this point (Shell9Geometry::rd_initial) in its local frame.
+          const Vec3 rd = rd_nat(0) * (sp.gr0 + t * sp.gr1) + rd_nat(1) * (sp.gs0 + t * sp.gs1);
+          const double c = rd.dot(b.frame.col(0)), sn = rd.dot(b.frame.col(1));
+          const double len = std::hypot(c, sn);
+          ops->flow.back().rd_cos = c / len;
+          ops->flow.back().rd_sin = sn / len;
+        }
         rows += 3;
         if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
         if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
@@ -496,7 +570,7 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   for (std::size_t f = 0; f < ops.flow.size(); ++f) {
     const Shell9Operators::FlowRow& fr = ops.flow[f];
     const Vec3 d = ws.rate.segment<3>(fr.row);
-    PointLaw p = evaluate_point(mat, state, static_cast<int>(f), d, kind, tangent_weight);
+    PointLaw p = evaluate_point(mat, state, fr, static_cast<int>(f), d, kind, tangent_weight);
     if (state.face_pressure) {  // sigma_33 = -p(zeta): the normal stresses shift (normal_stress.h)
       const NormalStressTerm t =
           normal_stress_term(state.face_pressure[fr.point].at(fr.zeta), d(0), d(1));

@@ -25,6 +25,7 @@
 #include "element/simpson.h"
 #include "material/hill_plane_stress.h"
 #include "material/normal_stress.h"
+#include "material/planar_anisotropy.h"
 
 namespace vs::shell3d {
 
@@ -36,7 +37,12 @@ struct Shell9Material {
   bool viscous = false;
   double young = 0.0, poisson = 0.5;        // elastic
   const HillPlaneStressLaw* law = nullptr;  // viscous (not owned)
-  double shear_viscosity = 0.0;             // viscous: transverse-shear penalty viscosity
+  // Planar anisotropy (not owned; null: the law's normal anisotropy). The yield function in
+  // material axes replaces the law's A; the scalar flow law (hardening, rate, cut-off) stays the
+  // law's. RD per flow point: Shell9Operators::FlowRow::rd_cos (needs material axes in the
+  // geometry).
+  const PlanarAnisotropy* planar = nullptr;
+  double shear_viscosity = 0.0;  // viscous: transverse-shear penalty viscosity
   double shear_correction = kShellShearCorrection;
   // Artificial drilling stiffness at 6-dof nodes: drill_scale * G_ref * h_a * (element area) / 9
   // for each such node (G_ref = G or shear_viscosity).
@@ -115,6 +121,9 @@ struct Shell9Operators {
     int point = 0;  // in-plane point (resultants)
     double dV = 0.0, dz = 0.0, arm = 0.0;  // volume weight; h/2 dt and z dz (resultants)
     double zeta = 0.0;                     // z / h = t / 2 of the thickness point
+    // Planar anisotropy: RD at the angle a from the point's e1, (cos a, sin a) (RD along e1
+    // without material axes).
+    double rd_cos = 1.0, rd_sin = 0.0;
   };
   struct ShearRow {
     int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
@@ -146,6 +155,12 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
 void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
                      const Shell9Material& mat, const Shell9State& state, const Eigen::VectorXd& q,
                      Shell9Stiffness kind, Shell9Output* out, double tangent_weight = 1.0);
+
+// Squared dual norm of a flow direction n at flow point fr (the ball |n|_* <= 1 of the
+// primal-dual tangent): 3 n^T A^-1 n with the point's A (Hill 1948), or sigma_bar(n)^2 in the
+// material axes of the point (Yld2000-2d).
+double shell9_dual_norm_squared(const Shell9Material& mat, const Shell9Operators::FlowRow& fr,
+                                const Vec3& n);
 
 // Mid-surface area of the element (3x3 Gauss).
 double shell9_area(const Shell9Geometry& g);

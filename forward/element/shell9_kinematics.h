@@ -45,6 +45,13 @@ struct Shell9Geometry {
   // forces and matrices come out in those frames (the forming model's nodal frames, paper 6.7).
   bool has_vel_frame = false;
   std::array<Mat3, 9> vel_frame;
+  // Optional material axes (planar anisotropy): the initial mid-surface nodes and the rolling
+  // direction there. The element convects RD with the sheet: a material line along RD in the
+  // initial configuration, dX = c_r G_r + c_s G_s (natural increments c), is c_r g_r + c_s g_s
+  // now (shell9.h, Shell9Operators::FlowRow::rd_cos).
+  bool has_material_axes = false;
+  std::array<Vec3, 9> x_initial;
+  Vec3 rd_initial = Vec3::UnitX();
 
   // Element dofs: per node 3 velocities then n_rot rotation rates.
   int ndof() const;

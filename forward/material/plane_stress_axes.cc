@@ -4,9 +4,10 @@
 
 namespace vs {
 
-MaterialAxes::MaterialAxes(double rd_angle_rad) {
-  const double c = std::cos(rd_angle_rad);
-  const double s = std::sin(rd_angle_rad);
+MaterialAxes::MaterialAxes(double rd_angle_rad)
+    : MaterialAxes(std::cos(rd_angle_rad), std::sin(rd_angle_rad)) {}
+
+MaterialAxes::MaterialAxes(double c, double s) {
   T_ << c * c, s * s, c * s,  //
       s * s, c * c, -c * s,   //
       -2.0 * c * s, 2.0 * c * s, c * c - s * s;

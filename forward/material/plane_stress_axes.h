@@ -34,6 +34,8 @@ class MaterialAxes {
  public:
   // rd_angle_rad: angle from the local axis e1 to RD (counter-clockwise).
   explicit MaterialAxes(double rd_angle_rad = 0.0);
+  // From c = cos a, s = sin a (c^2 + s^2 = 1).
+  MaterialAxes(double c, double s);
 
   // Local -> material: rate d' = T d, stress s' = T^-T s.
   PlaneVector rate_to_material(const PlaneVector& d) const { return T_ * d; }

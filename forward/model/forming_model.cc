@@ -37,6 +37,7 @@ FormingModel::FormingModel(const Scene& scene)
                scene.blank.radius_mm,
            scene.material.r_value),
       hill_(law_),
+      planar_(make_planar_anisotropy(scene.material.anisotropy, scene.source)),
       tools_(make_tools(scene)) {
   if (scene.geometry != Geometry::kShell3d) {
     throw InputError(scene.source + ": the 3D shell solver only runs geometry = \"shell3d\"");
@@ -381,7 +382,18 @@ Shell9Geometry FormingModel::geometry(const FormingState& s, int e) const {
     g.vel_frame[a] = frame_[i];
   }
   g.has_vel_frame = true;
+  if (planar_) {
+    g.has_material_axes = true;
+    for (int a = 0; a < 9; ++a) g.x_initial[a] = mesh_.nodes[conn[a]];
+    g.rd_initial = Vec3(std::cos(planar_->rd_angle_rad), std::sin(planar_->rd_angle_rad), 0.0);
+  }
   return g;
+}
+
+Shell9Material FormingModel::material(int e) const {
+  Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
+  mat.planar = planar_.get();
+  return mat;
 }
 
 std::vector<double> FormingModel::lumped_areas(const std::vector<Vec3>& x) const {
@@ -432,7 +444,7 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   // the frames into its operator (B Q_a per node), so forces and the matrix K_local = T^T K T,
   // T = diag(Q_a, I2), come out in the nodal frames directly.
   const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
-  const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
+  const Shell9Material mat = material(e);
   Shell9State st;
   st.sigma_y = sigma_y_.data() + fp;
   st.hardening_viscosity = hardening_viscosity_.data() + fp;
@@ -592,10 +604,13 @@ void FormingModel::dual_prepare(const Eigen::VectorXd& x) {
   }
   dual_mode_ = DualMode::kGiven;
   dual_given_.resize(size);
+  const std::size_t per_element = static_cast<std::size_t>(flow_points_);
   for (std::size_t k = 0; k < size; ++k) {
     const Vec3& n1 = dual_[1].points[k].n;
     Vec3 n = n1 + alpha * (dual_[0].points[k].n_full - n1);
-    const double norm2 = hill_.dual_norm_squared(n);
+    const std::size_t e = k / per_element;
+    const double norm2 = shell9_dual_norm_squared(material(static_cast<int>(e)),
+                                                  operators_[e].flow[k % per_element], n);
     if (norm2 > 1.0) n /= std::sqrt(norm2);
     dual_given_[k] = n;
   }
@@ -650,7 +665,7 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
   for (int e = 0; e < ne; ++e) {
     const Eigen::VectorXd q = assembler_->gather(e, x);
     const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
-    const Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
+    const Shell9Material mat = material(e);
     Shell9State st;
     st.sigma_y = sigma_y_.data() + fp;
     st.hardening_viscosity = hardening_viscosity_.data() + fp;

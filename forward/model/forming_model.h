@@ -96,6 +96,10 @@ class FormingModel {
   // law().effective_stress(hardening().flow_stress(eps_bar), rate)).
   const Hardening& hardening() const { return hardening_; }
   const ViscousLaw& law() const { return law_; }
+  // Planar anisotropy of the scene ([material.anisotropy]), or null (normal anisotropy).
+  const PlanarAnisotropy* planar() const { return planar_.get(); }
+  // The point law of element e's flow points in the current step (frozen shear viscosity).
+  Shell9Material material(int e) const;
   int thickness_points() const { return static_cast<int>(thick_.zeta.size()); }
   const std::vector<RigidTool>& tools() const { return tools_; }
   int punch_index() const { return punch_; }
@@ -250,6 +254,7 @@ class FormingModel {
   Hardening hardening_;
   ViscousLaw law_;
   HillPlaneStressLaw hill_;
+  std::unique_ptr<PlanarAnisotropy> planar_;  // null: normal anisotropy (hill_)
   std::vector<RigidTool> tools_;
   int punch_ = -1, die_ = -1;
   double holder_force_ = 0.0, holder_friction_ = 0.0;  // whole blank [N], Coulomb coefficient

@@ -65,6 +65,20 @@ const char* name(RateLaw law) {
   return "unknown";
 }
 
+const char* name(AnisotropyModel m) {
+  switch (m) {
+    case AnisotropyModel::kNormal:
+      return "normal";
+    case AnisotropyModel::kHill48R:
+      return "hill48_r";
+    case AnisotropyModel::kHill48Stress:
+      return "hill48_stress";
+    case AnisotropyModel::kYld2000:
+      return "yld2000";
+  }
+  return "?";
+}
+
 const char* name(ToolKind kind) {
   switch (kind) {
     case ToolKind::kHemisphericalPunch:
@@ -161,6 +175,17 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                      {"m", r.m},
                      {"reference_rate_per_s", r.reference_rate_per_s}}},
                    {"r_value", s.material.r_value}};
+  const AnisotropySpec& an = s.material.anisotropy;
+  j["material"]["anisotropy"] = {{"model", name(an.model)},
+                                 {"rolling_direction_deg", an.rolling_direction_deg},
+                                 {"r0", an.r0},
+                                 {"r45", an.r45},
+                                 {"r90", an.r90},
+                                 {"sigma45_ratio", an.sigma45_ratio},
+                                 {"sigma90_ratio", an.sigma90_ratio},
+                                 {"sigma_b_ratio", an.sigma_b_ratio},
+                                 {"r_b", an.r_b},
+                                 {"exponent", an.exponent}};
 
   Json tools = Json::array();
   for (const ToolSpec& t : s.tools) tools.push_back(tool_json(t));

@@ -25,7 +25,7 @@ void check_geometry_keys(const toml::table& table, const Scene& scene, const std
       geometry_key.choices.at(static_cast<std::size_t>(scene.geometry));
   for (const KeySpec& k : scene_keys()) {
     if (k.geometry.empty() || k.geometry == geometry) continue;
-    const toml::table* section = table[k.section].as_table();
+    const toml::table* section = table.at_path(k.section).as_table();  // "material.anisotropy"
     if (section == nullptr) continue;
     for (auto&& [key, node] : *section) {
       if (key.str() != k.name) continue;

@@ -79,9 +79,30 @@ struct RateSpec {
   double reference_rate_per_s = 1.0;  // power-law reference strain rate
 };
 
+// Planar anisotropy ([material.anisotropy], shell3d only). The yield function is normalised to
+// the uniaxial yield stress along RD, so the hardening curve is the RD tensile curve; stresses
+// are ratios to it (material/planar_anisotropy.h).
+enum class AnisotropyModel {
+  kNormal,        // Hill 1948 with planar isotropy: material.r_value (no planar anisotropy)
+  kHill48R,       // Hill 1948 from r0, r45, r90
+  kHill48Stress,  // Hill 1948 from sigma45, sigma90, sigma_b (ratios to sigma0)
+  kYld2000,       // Barlat Yld2000-2d from the eight data and the exponent
+};
+
+struct AnisotropySpec {
+  AnisotropyModel model = AnisotropyModel::kNormal;
+  double rolling_direction_deg = 0.0;  // angle of RD from the x axis, counter-clockwise
+  double r0 = 1.0, r45 = 1.0, r90 = 1.0;
+  double sigma45_ratio = 1.0, sigma90_ratio = 1.0, sigma_b_ratio = 1.0;
+  double r_b = 1.0;       // Yld2000-2d: d22 / d11 in equibiaxial tension
+  double exponent = 8.0;  // Yld2000-2d: 8 for aluminium (FCC), 6 for steel (BCC)
+  bool planar() const { return model != AnisotropyModel::kNormal; }
+};
+
 struct MaterialSpec {
   HardeningSpec hardening;
   RateSpec rate;
+  AnisotropySpec anisotropy;
   // Normal anisotropy (Lankford) R = width / thickness strain rate in uniaxial tension.
   // Hill 1948 with planar isotropy, normalised so that sigma_bar equals the in-plane uniaxial
   // flow stress: the hardening curve is the in-plane tensile curve for every R.

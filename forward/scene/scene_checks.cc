@@ -125,6 +125,22 @@ void check_blank(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
   }
 }
 
+void check_material(const Scene& scene, const SceneSourceMap& where) {
+  const AnisotropySpec& a = scene.material.anisotropy;
+  if (!a.planar() || scene.blank.symmetry != BlankSymmetry::kQuarter) return;
+  // The quarter model mirrors the sheet about x = 0 and y = 0: valid for an orthotropic sheet
+  // only when those planes are material symmetry planes (RD along x or y).
+  const double turns = a.rolling_direction_deg / 90.0;
+  if (std::abs(turns - std::round(turns)) > 1e-12) {
+    where.fail("material.anisotropy.rolling_direction_deg",
+               fmt::format("material.anisotropy.rolling_direction_deg = {}: a quarter blank "
+                           "(blank.symmetry = \"quarter\") mirrors the sheet about x = 0 and "
+                           "y = 0, which needs RD along x or y (0, 90, 180 or -90 deg); use "
+                           "blank.symmetry = \"full\" for another angle",
+                           a.rolling_direction_deg));
+  }
+}
+
 void check_process(const Scene& scene, const SceneSourceMap& where) {
   const ProcessSpec& p = scene.process;
   for (std::size_t i = 0; i < p.output_travels_mm.size(); ++i) {
@@ -216,6 +232,7 @@ void check_scene_consistency(const Scene& scene, const SceneSourceMap& where) {
   const ToolRoles roles = find_roles(scene, where);
   check_tools(scene, roles, where);
   check_blank(scene, roles, where);
+  check_material(scene, where);
   check_process(scene, where);
   check_run_size(scene, where);
 }
@@ -232,6 +249,9 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "With a die, the blank reaches it: blank `radius_mm` > die `radius_mm`.",
       "`edge = \"free\"` requires a die (otherwise nothing holds the sheet).",
       "Thin shell: blank `thickness_mm` < blank `radius_mm` / 5.",
+      "Planar anisotropy on a quarter blank: `rolling_direction_deg` a multiple of 90 (the "
+      "symmetry planes x = 0, y = 0 must be material symmetry planes); `material.r_value` is "
+      "not given with a planar `material.anisotropy.model`.",
       "`output_travels_mm` strictly increasing, each in (0, `punch_travel_mm`].",
       "Run size: steps end on a travel grid no coarser than min(`max_travel_increment_mm`, "
       "`max_travel_increment_per_length` x the shortest element), so a run takes at least "

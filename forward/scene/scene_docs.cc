@@ -58,12 +58,13 @@ std::string allowed_text(const KeySpec& key, bool markdown) {
 }
 
 std::string applies_text(const KeySpec& key) {
-  if (!key.geometry.empty()) return fmt::format("geometry {}", key.geometry);
-  if (key.applies_to.empty()) return "";
+  const std::string geometry = key.geometry.empty() ? "" : fmt::format("geometry {}", key.geometry);
+  if (key.applies_to.empty()) return geometry;
   std::string out;
   for (std::string_view v : key.applies_to) out += (out.empty() ? "" : ", ") + std::string(v);
   const VariantSelector* selector = find_selector(key.section);
-  return selector != nullptr ? fmt::format("{} {}", selector->label, out) : out;
+  if (selector != nullptr) out = fmt::format("{} {}", selector->label, out);
+  return geometry.empty() ? out : geometry + "; " + out;
 }
 
 // Whether the key is used by the section's default variant (so its default line is active).

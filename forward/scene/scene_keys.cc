@@ -18,6 +18,7 @@ BlankSpec& blank(Scene& s, ToolSpec&) { return s.blank; }
 MaterialSpec& material(Scene& s, ToolSpec&) { return s.material; }
 HardeningSpec& hardening(Scene& s, ToolSpec&) { return s.material.hardening; }
 RateSpec& rate(Scene& s, ToolSpec&) { return s.material.rate; }
+AnisotropySpec& anisotropy(Scene& s, ToolSpec&) { return s.material.anisotropy; }
 ToolSpec& tool(Scene&, ToolSpec& t) { return t; }
 ProcessSpec& process(Scene& s, ToolSpec&) { return s.process; }
 NumericsSpec& numerics(Scene& s, ToolSpec&) { return s.numerics; }
@@ -164,6 +165,47 @@ std::vector<KeySpec> build_keys() {
            closed(0.05, 20),
            "Normal anisotropy (Lankford) R; Hill 1948, planar isotropy, normalised to the "
            "in-plane uniaxial curve."));
+
+  // [material.anisotropy]
+  const std::string_view an = "material.anisotropy";
+  add(choice(an, "model", enum_field<&anisotropy, &AnisotropySpec::model>(),
+             {"normal", "hill48_r", "hill48_stress", "yld2000"},
+             "Yield function: normal = Hill 1948 with normal anisotropy material.r_value (no "
+             "planar anisotropy); hill48_r = Hill 1948 from r0, r45, r90; hill48_stress = Hill "
+             "1948 from sigma45_ratio, sigma90_ratio, sigma_b_ratio; yld2000 = Barlat Yld2000-2d "
+             "from all eight data and exponent. Normalised to the RD tensile curve "
+             "(material.hardening)."))
+      .geometry = "shell3d";
+  add(make(an, "rolling_direction_deg", kFloat,
+           float_field<&anisotropy, &AnisotropySpec::rolling_direction_deg>(), "deg",
+           closed(-180, 180),
+           "Angle of the rolling direction RD from the x axis (counter-clockwise); the material "
+           "axes then follow the sheet (convected). A quarter blank needs RD along x or y."))
+      .geometry = "shell3d";
+  auto aniso = [&](std::string_view name, KeyField field, Range range, std::string_view doc,
+                   std::vector<std::string_view> used_by) {
+    KeySpec& k = add(make(an, name, kFloat, field, "", range, doc));
+    k.geometry = "shell3d";
+    k.required = true;
+    k.applies_to = std::move(used_by);
+  };
+  aniso("r0", float_field<&anisotropy, &AnisotropySpec::r0>(), closed(0.05, 20),
+        "Lankford ratio in tension along RD.", {"hill48_r", "yld2000"});
+  aniso("r45", float_field<&anisotropy, &AnisotropySpec::r45>(), closed(0.05, 20),
+        "Lankford ratio in tension at 45 deg to RD.", {"hill48_r", "yld2000"});
+  aniso("r90", float_field<&anisotropy, &AnisotropySpec::r90>(), closed(0.05, 20),
+        "Lankford ratio in tension along TD.", {"hill48_r", "yld2000"});
+  aniso("sigma45_ratio", float_field<&anisotropy, &AnisotropySpec::sigma45_ratio>(), closed(0.5, 2),
+        "Yield stress at 45 deg to RD over the RD yield stress.", {"hill48_stress", "yld2000"});
+  aniso("sigma90_ratio", float_field<&anisotropy, &AnisotropySpec::sigma90_ratio>(), closed(0.5, 2),
+        "Yield stress along TD over the RD yield stress.", {"hill48_stress", "yld2000"});
+  aniso("sigma_b_ratio", float_field<&anisotropy, &AnisotropySpec::sigma_b_ratio>(), closed(0.5, 2),
+        "Equibiaxial yield stress over the RD yield stress.", {"hill48_stress", "yld2000"});
+  aniso("r_b", float_field<&anisotropy, &AnisotropySpec::r_b>(), closed(0.05, 20),
+        "Equibiaxial strain-rate ratio d_TD / d_RD (1 when not measured: say so in the scene).",
+        {"yld2000"});
+  aniso("exponent", float_field<&anisotropy, &AnisotropySpec::exponent>(), closed(2, 20),
+        "Yld2000-2d exponent: 8 for aluminium (FCC), 6 for steel (BCC).", {"yld2000"});
 
   // [material.hardening]
   const std::string_view h = "material.hardening";
@@ -433,6 +475,8 @@ const std::vector<SectionSpec>& scene_sections() {
       {"material.hardening", "[material.hardening]",
        "Strain hardening; the keys allowed depend on `law`."},
       {"material.rate", "[material.rate]", "Strain-rate sensitivity; the keys depend on `law`."},
+      {"material.anisotropy", "[material.anisotropy]",
+       "Planar anisotropy (shell3d only); the keys required depend on `model`."},
       {"tool", "[[tool]]", "Rigid tools, one table each; the keys allowed depend on `kind`."},
       {"process", "[process]", "Punch motion and output stages."},
       {"numerics", "[numerics]", "Integration, nonlinear solver and step control."},
@@ -453,9 +497,8 @@ const KeySpec* find_key(std::string_view section, std::string_view name) {
 
 const VariantSelector* find_selector(std::string_view section) {
   static const std::vector<VariantSelector> selectors = {
-      {"material.hardening", "law", "hardening law"},
-      {"material.rate", "law", "rate law"},
-      {"tool", "kind", "tool kind"},
+      {"material.hardening", "law", "hardening law"},       {"material.rate", "law", "rate law"},
+      {"material.anisotropy", "model", "anisotropy model"}, {"tool", "kind", "tool kind"},
       {"forming_limit", "model", "forming limit model"},
   };
   for (const VariantSelector& s : selectors) {

@@ -146,7 +146,8 @@ class SceneReader {
   }
 
   void read_material(const toml::table& material) {
-    read_keys(material, "material", "in [material]", "material", no_tool_, {"hardening", "rate"});
+    read_keys(material, "material", "in [material]", "material", no_tool_,
+              {"hardening", "rate", "anisotropy"});
     if (const toml::node* node = material.get("hardening")) {
       const toml::table& hardening = as_table(*node, "material.hardening");
       where_.add("material.hardening", hardening.source());
@@ -158,6 +159,17 @@ class SceneReader {
       const toml::table& rate = as_table(*node, "material.rate");
       where_.add("material.rate", rate.source());
       read_keys(rate, "material.rate", "in [material.rate]", "material.rate", no_tool_, {});
+    }
+    if (const toml::node* node = material.get("anisotropy")) {
+      const toml::table& anisotropy = as_table(*node, "material.anisotropy");
+      where_.add("material.anisotropy", anisotropy.source());
+      read_keys(anisotropy, "material.anisotropy", "in [material.anisotropy]",
+                "material.anisotropy", no_tool_, {});
+      if (scene_.material.anisotropy.planar() && material.contains("r_value")) {
+        fail_at(where_.source(), material.get("r_value")->source(),
+                "material.r_value is the normal-anisotropy R; with a planar "
+                "material.anisotropy.model the r-values go in [material.anisotropy]");
+      }
     }
   }
 

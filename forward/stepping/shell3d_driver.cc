@@ -480,6 +480,11 @@ void Shell3dStepper::start(RunResult* result) const {
                   auto_sparse_solver(model_.num_dofs()) == SparseSolverKind::kCholmodSupernodal
                       ? "CHOLMOD supernodal LL^T"
                       : "Eigen SimplicialLDLT"));
+  result->built.push_back(model_.planar() != nullptr
+                              ? "material: " + model_.planar()->description +
+                                    " (material axes convected with the sheet per flow point)"
+                              : fmt::format("material: Hill 1948 with normal anisotropy R = {}",
+                                            scene_.material.r_value));
   for (std::string& line : tool_components(scene_)) result->built.push_back(std::move(line));
   // As the axisymmetric stepper: a shell discretisation finer than the thickness resolves nothing
   // real. The measure is the element size sqrt(A_e) (two node intervals of a 9-node element).
