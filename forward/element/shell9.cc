@@ -333,7 +333,8 @@ struct PointForm {
   double e_squared;
 };
 
-PointForm point_form(const Shell9Material& mat, const Shell9Operators::FlowRow& fr, const Vec3& d) {
+PointForm point_form(const Shell9Material& mat, const Shell9State& st,
+                     const Shell9Operators::FlowRow& fr, int flow_index, const Vec3& d) {
   PointForm f;
   if (mat.planar == nullptr) {
     f.M = mat.law->A();
@@ -343,7 +344,10 @@ PointForm point_form(const Shell9Material& mat, const Shell9Operators::FlowRow& 
     if (mat.planar->quadratic) {
       f.M = T.transpose() * mat.planar->A * T;
     } else {
-      const DualPoint dual = mat.planar->yield->dual(T * d);
+      PlaneVector* guess = st.flow_guess ? st.flow_guess + flow_index : nullptr;
+      const bool warm = guess != nullptr && !guess->isZero();
+      const DualPoint dual = mat.planar->yield->dual(T * d, warm ? guess : nullptr);
+      if (guess != nullptr && dual.rate > 0.0) *guess = dual.direction;
       f.a = T.transpose() * ((3.0 * dual.rate) * dual.direction);
       f.M = 3.0 * (T.transpose() * dual.hessian * T);
       f.e_squared = dual.rate * dual.rate;
@@ -392,7 +396,7 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st,
   const double hv = st.hardening_viscosity ? st.hardening_viscosity[flow_index] : 0.0;
   const HillPlaneStressLaw& law = *mat.law;
   // A and Ad of the normal-anisotropy law, or their per-point forms (point_form).
-  const PointForm form = point_form(mat, fr, d);
+  const PointForm form = point_form(mat, st, fr, flow_index, d);
   const Mat3& A = form.M;
   const Vec3& Ad = form.a;
   const InPlanePoint ip = law.evaluate_scaled(sy, hv, Ad, form.e_squared);

@@ -86,6 +86,10 @@ struct Shell9State {
   // Through-thickness normal stress sigma_33 = -p(zeta) (material/normal_stress.h): the face
   // pressures at each in-plane point (lower face = t = -1, opposite to e3); null: plane stress.
   const FacePressure* face_pressure = nullptr;
+  // Planar anisotropy without a closed-form dual (Yld2000-2d): per flow point the unit-surface
+  // stress m (material axes) of the point's last evaluation, the warm start of its local solve,
+  // overwritten with the new one (zero: no start yet). Null: every solve starts cold.
+  PlaneVector* flow_guess = nullptr;
 };
 
 enum class Shell9Stiffness { kSecant, kTangent, kNone };

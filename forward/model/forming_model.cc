@@ -54,6 +54,10 @@ FormingModel::FormingModel(const Scene& scene)
   }
   if (punch_ < 0) throw InputError(scene.source + ": the scene has no punch");
   read_holder(scene);
+  if (planar_ && !planar_->quadratic) {
+    flow_guess_.assign(static_cast<std::size_t>(num_elements() * flow_points_),
+                       PlaneVector::Zero());
+  }
   const int nn = num_nodes();
   const double tol = 1e-9 * scene.blank.radius_mm;
   axis_.assign(nn, 0);
@@ -449,6 +453,7 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   st.sigma_y = sigma_y_.data() + fp;
   st.hardening_viscosity = hardening_viscosity_.data() + fp;
   st.face_pressure = element_face_pressure(e);
+  if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
   if (kind == Shell9Stiffness::kTangent) {
     st.dual_record = dual_[2].points.data() + fp;
     if (dual_mode_ == DualMode::kAnchor) st.dual_anchor = dual_[0].points.data() + fp;
@@ -670,6 +675,8 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
     st.sigma_y = sigma_y_.data() + fp;
     st.hardening_viscosity = hardening_viscosity_.data() + fp;
     st.face_pressure = element_face_pressure(e);
+    if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
+    if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
     Shell9Output out;
     shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
                     &out);

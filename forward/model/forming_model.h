@@ -255,6 +255,9 @@ class FormingModel {
   ViscousLaw law_;
   HillPlaneStressLaw hill_;
   std::unique_ptr<PlanarAnisotropy> planar_;  // null: normal anisotropy (hill_)
+  // Yld2000-2d: warm starts of the local dual solves, per element and flow point (Shell9State::
+  // flow_guess); written by every evaluation, each element its own slice.
+  mutable std::vector<PlaneVector> flow_guess_;
   std::vector<RigidTool> tools_;
   int punch_ = -1, die_ = -1;
   double holder_force_ = 0.0, holder_friction_ = 0.0;  // whole blank [N], Coulomb coefficient
