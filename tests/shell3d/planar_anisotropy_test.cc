@@ -354,6 +354,28 @@ TEST(PlanarAnisotropy3d, RollingDirectionAlongYMirrorsRollingDirectionAlongX) {
               1e-8 * rd_x.steps.back().punch_force_N);
 }
 
+// Yld2000-2d with isotropic data and exponent 2 is von Mises (alpha = 1): its local dual solve
+// must reproduce the closed-form law of R = 1 in a forming run (measured: equal to 1e-13).
+TEST(PlanarAnisotropy3d, IsotropicYld2000WithExponentTwoRunsLikeVonMises) {
+  Scene s =
+      load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
+  s.blank.divisions = 2;
+  s.process.punch_travel_mm = 3.0;
+  s.process.output_travels_mm = {3.0};
+  s.tools.at(0).friction = 0.2;
+  const RunResult mises = simulate_shell3d(s);
+  AnisotropySpec& a = s.material.anisotropy;
+  a.model = AnisotropyModel::kYld2000;
+  a.exponent = 2.0;  // every other datum 1: the isotropic point alpha = 1
+  const RunResult yld = simulate_shell3d(s);
+  ASSERT_TRUE(mises.completed() && yld.completed());
+  ASSERT_EQ(mises.steps.size(), yld.steps.size());
+  const double f0 = mises.steps.back().punch_force_N, f1 = yld.steps.back().punch_force_N;
+  std::cout << "[ measured ] force von Mises " << f0 << " N, Yld2000 a = 2 " << f1
+            << " N, relative " << (f1 - f0) / f0 << "\n";
+  EXPECT_LT(std::abs(f1 - f0), 1e-9 * f0);
+}
+
 // Yld2000-2d warm-starts each flow point's local solve from its previous evaluation: still
 // bitwise the same for one and two threads (each element owns its points' starts).
 TEST(PlanarAnisotropy3d, Yld2000RunIsBitwiseIdenticalForOneAndTwoThreads) {
