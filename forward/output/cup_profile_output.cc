@@ -55,7 +55,11 @@ CupProfileReport cup_profile_report(const Scene& scene, const RunResult& result)
   CupProfileReport r;
   r.ear_offset_deg = std::numeric_limits<double>::quiet_NaN();
   r.applies = result.geometry == Geometry::kShell3d && scene.blank.edge == EdgeCondition::kFree;
-  if (!r.applies) return r;
+  if (!r.applies) {
+    r.reason = result.geometry == Geometry::kShell3d ? "the blank edge is not free"
+                                                     : "an axisymmetric run has no earing profile";
+    return r;
+  }
   r.has_measured = !scene.output.measured_cup_profile.empty();
   if (r.has_measured) {
     r.measured_file = scene.output.measured_cup_profile;

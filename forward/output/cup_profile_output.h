@@ -18,7 +18,7 @@ struct CupProfileReport {
   // A 3D run whose blank has a free edge: the profile is wanted (even if it cannot be made).
   bool applies = false;
   bool available = false;
-  std::string reason;  // why not available, when it applies
+  std::string reason;  // why not available
   CupProfile profile;  // the final stage's
   CupProfileSummary summary;
   bool has_measured = false;  // scene.output.measured_cup_profile given
@@ -42,8 +42,9 @@ std::string cup_profile_csv(const CupProfile& profile);
 SvgFigure cup_profile_figure(const Scene& scene, const RunResult& result,
                              const CupProfileReport& report);
 
-// The run.json entry: applies, available / reason, travel, RD, rim nodes, the summary, the
-// measured one and the ear offset.
+// The run.json entry (written for every run, so that both geometries have the same keys):
+// available / reason, travel, RD, whether a quarter was unfolded, the summary, the measured one
+// and the ear offset.
 nlohmann::ordered_json cup_profile_json(const CupProfileReport& report);
 
 // Lines for the terminal summary ("" when the profile does not apply), e.g.

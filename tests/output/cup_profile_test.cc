@@ -480,9 +480,17 @@ TEST(CupProfileFiles, NoProfileWithoutAFreeEdgeOr3D) {
       write_run_folder(scene, synthetic_3d_run(scene), dir.string());
   EXPECT_EQ(std::find(files.begin(), files.end(), "cup_profile.csv"), files.end());
   const nlohmann::json j = nlohmann::json::parse(test::read_file(dir / "run.json"));
-  EXPECT_FALSE(j.contains("cup_profile"));
+  EXPECT_FALSE(j["cup_profile"]["available"].get<bool>());
+  EXPECT_EQ(j["cup_profile"]["reason"], "the blank edge is not free");
   EXPECT_EQ(summary_report(summarize_run(scene, synthetic_3d_run(scene))).find("cup height"),
             std::string::npos);
+  // An axisymmetric run has the entry too (both geometries write the same keys), not available.
+  const std::filesystem::path axi = test::scratch_folder() / "axisymmetric";
+  std::filesystem::create_directories(axi);
+  write_run_folder(test::small_scene(), test::completed_result(), axi.string());
+  const nlohmann::json a = nlohmann::json::parse(test::read_file(axi / "run.json"));
+  EXPECT_FALSE(a["cup_profile"]["available"].get<bool>());
+  EXPECT_FALSE(std::filesystem::exists(axi / "cup_profile.csv"));
 }
 
 }  // namespace
