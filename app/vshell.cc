@@ -191,7 +191,9 @@ int main(int argc, char** argv) {
       "strains_travel_<travel>mm_<line>.csv for the lines x, y, diagonal), fld_points.csv "
       "(with each element's margin to the forming-limit curve of [forming_limit]), "
       "strain_paths.csv (axisymmetric with output.history), stage_<k>.vtu + stages.pvd (3D, "
-      "ParaView, stage_0 at zero travel), SVG plots and run.json");
+      "ParaView, stage_0 at zero travel), cup_profile.csv + cup_profile.svg (3D with a free "
+      "blank edge: rim height against the angle from the rolling direction), SVG plots and "
+      "run.json");
   add_scene_args(*run, run_args.scene);
   run->add_option("-o,--output", run_args.output_dir,
                   "Output folder, created if missing (default: the scene's output.directory, "

@@ -57,6 +57,7 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                      {"slope_reversals", noise.reversals},
                      {"rms_second_difference_of_peak", noise.rms_second_difference},
                      {"noise_like", noise.noise_like}};
+  j["cup_profile"] = cup_profile_json(s.cup_profile);
   j["profiles"] = result.profiles.size();
   j["history_entries"] = result.history.size();
   j["scene"] = scene_to_json(scene);

@@ -100,6 +100,7 @@ RunSummary summarize_run(const Scene& scene, const RunResult& result) {
     s.flc_min_eps_major = p->eps_major;
     s.flc_min_eps_minor = p->eps_minor;
   }
+  s.cup_profile = cup_profile_report(scene, result);
   return s;
 }
 
@@ -142,6 +143,8 @@ std::string summary_report(const RunSummary& s) {
     }
     out += fmt::format("\nFLC               {}", s.flc_description);
   }
+  const std::string cup = cup_profile_report_text(s.cup_profile);
+  if (!cup.empty()) out += "\n" + cup;
   out += fmt::format("\nsolver time       {:.2f} s", s.total_time_s);
   return out;
 }

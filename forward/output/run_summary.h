@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "output/cup_profile_output.h"
 #include "run/run_result.h"
 #include "scene/scene.h"
 
@@ -43,6 +44,8 @@ struct RunSummary {
   // Every warning of the run: RunResult::warnings, then those of the forming-limit curve and of
   // the load curve (suspect_results.h), with a scene.
   std::vector<std::string> warnings;
+  // Cup-height (earing) profile of a 3D run with a free blank edge (with a scene).
+  CupProfileReport cup_profile;
 };
 
 const char* termination_name(Termination termination);

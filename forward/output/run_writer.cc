@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "output/cup_profile_output.h"
 #include "output/fld.h"
 #include "output/profile_csv.h"
 #include "output/run_manifest.h"
@@ -97,12 +98,16 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
   }
   out.text("strain_paths.csv", strain_paths_csv(paths));
 
+  const CupProfileReport cup = cup_profile_report(scene, result);
+  if (cup.available) out.text("cup_profile.csv", cup_profile_csv(cup.profile));
+
   if (scene.output.plots) {
     out.svg("load_travel.svg", load_travel_figure(scene, result));
     out.svg("thickness_strain.svg", thickness_strain_figure(scene, result));
     out.svg("strains.svg", strains_figure(scene, result));
     out.svg("deformed_stages.svg", deformed_stages_figure(scene, result));
     out.svg("fld.svg", fld_figure(scene, result, paths, flc));
+    if (cup.available) out.svg("cup_profile.svg", cup_profile_figure(scene, result, cup));
   }
 
   std::vector<std::string> files = out.written();

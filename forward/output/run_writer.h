@@ -9,6 +9,8 @@
 //                                                the output stages and the end
 //   load_travel.svg, thickness_strain.svg, strains.svg, deformed_stages.svg, fld.svg
 //                                                if scene.output.plots
+//   cup_profile.csv, cup_profile.svg (if plots)  3D with a free blank edge: rim height against
+//                                                the angle from RD at the end (cup_profile.h)
 //   run.json                                     manifest (written last, lists all the above)
 // A failed or partial result is written as far as it goes; missing profiles or history never
 // throw. Only an I/O failure (folder missing, disk full) throws InputError.

@@ -219,8 +219,10 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                         {"table_major", fl.table_major},
                         {"safety_margin", fl.safety_margin}};
 
-  j["output"] = {
-      {"directory", s.output.directory}, {"plots", s.output.plots}, {"history", s.output.history}};
+  j["output"] = {{"directory", s.output.directory},
+                 {"plots", s.output.plots},
+                 {"history", s.output.history},
+                 {"measured_cup_profile", s.output.measured_cup_profile}};
   return j;
 }
 

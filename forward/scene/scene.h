@@ -208,6 +208,12 @@ struct OutputSpec {
   std::string directory = "out";  // relative to the current working directory
   bool plots = true;              // write SVG plots
   bool history = true;            // keep per-step element strains (FLD paths, deformed stages)
+  // geometry = shell3d: measured cup-height profile shown beside the computed one
+  // (cup_profile.svg, run.json): the file (given relative to the scene file, stored resolved),
+  // "" = none, and its points, read when the scene is loaded (scene/cup_profile_file.h).
+  std::string measured_cup_profile;
+  std::vector<double> measured_cup_angle_deg;  // angle from the rolling direction
+  std::vector<double> measured_cup_height_mm;
 };
 
 struct Scene {

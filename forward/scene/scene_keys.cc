@@ -430,6 +430,13 @@ std::vector<KeySpec> build_keys() {
            Range{}, "Write SVG plots."));
   add(make("output", "history", KeyType::kBool, bool_field<&output, &OutputSpec::history>(), "",
            Range{}, "Keep per-step element strains (FLD paths, deformed stages)."));
+  add(make("output", "measured_cup_profile", KeyType::kString,
+           string_field<&output, &OutputSpec::measured_cup_profile>(), "", Range{},
+           "Measured cup-height profile drawn beside the computed one (cup_profile.svg, "
+           "run.json), relative to the scene file: lines 'angle_from_rd_deg, cup_height_mm' "
+           "(comma and/or blanks), '#' comments, angles in [0, 360] not repeating, at least 3 "
+           "points. Empty: none."))
+      .geometry = "shell3d";
   return keys;
 }
 

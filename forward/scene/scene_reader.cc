@@ -7,6 +7,8 @@
 #include <map>
 #include <vector>
 
+#include "core/error.h"
+#include "scene/cup_profile_file.h"
 #include "scene/did_you_mean.h"
 #include "scene/flow_curve_table.h"
 #include "scene/key_value.h"
@@ -76,6 +78,7 @@ class SceneReader {
         read_keys(as_table(*e.node, name), name, fmt::format("in [{}]", name), name, no_tool_, {});
       }
     }
+    read_measured_cup_profile(root);
     return scene_;
   }
 
@@ -280,6 +283,27 @@ class SceneReader {
               fmt::format("{}: cannot open table file '{}'", address, path.string()));
     }
     return read_flow_curve_csv(path.string());
+  }
+
+  // output.measured_cup_profile: resolved relative to the scene file and read now, so that a bad
+  // file is refused before the run (read_cup_profile_file names its line).
+  void read_measured_cup_profile(const toml::table& root) {
+    OutputSpec& out = scene_.output;
+    if (out.measured_cup_profile.empty()) return;
+    const toml::table* output = root.get_as<toml::table>("output");
+    const toml::node* node = output != nullptr ? output->get("measured_cup_profile") : nullptr;
+    std::filesystem::path path(out.measured_cup_profile);
+    if (path.is_relative() && !base_dir_.empty()) path = std::filesystem::path(base_dir_) / path;
+    if (!std::filesystem::is_regular_file(path)) {
+      const std::string message = fmt::format(
+          "output.measured_cup_profile: cannot open cup profile file '{}'", path.string());
+      if (node != nullptr) fail_at(where_.source(), node->source(), message);
+      throw InputError(fmt::format("{}: {}", where_.source(), message));
+    }
+    out.measured_cup_profile = path.string();
+    const CupProfilePoints points = read_cup_profile_file(out.measured_cup_profile);
+    out.measured_cup_angle_deg = points.angle_deg;
+    out.measured_cup_height_mm = points.height_mm;
   }
 
   void read_tools(const toml::node& node) {
