@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
 
 #include "core/error.h"
 #include "least_squares.h"
@@ -33,8 +34,7 @@ std::vector<SceneBinding> bind_scenes(CalibrationConfig& config) {
   for (std::size_t s = 0; s < config.scenes.size(); ++s) {
     std::vector<double> travels;
     for (const auto& d : config.data) {
-      if (d.measurement.kind != MeasurementKind::kLoadTravel &&
-          scene_index(config, d) == static_cast<int>(s)) {
+      if (is_strain_profile(d.measurement.kind) && scene_index(config, d) == static_cast<int>(s)) {
         travels.push_back(d.measurement.travel_mm);
       }
     }
@@ -69,6 +69,29 @@ std::vector<SceneBinding> bind_scenes(CalibrationConfig& config) {
   return bindings;
 }
 
+// A cup height profile needs a 3D scene with a free blank edge, and parameters that leave the
+// blank and the rolling direction alone (the rim is identified with the scene as configured).
+void check_cup_profile_data(const CalibrationConfig& config, const DataSpec& d,
+                            const std::string& source, const Scene& scene) {
+  const std::string& name = d.measurement.name;
+  if (scene.geometry != Geometry::kShell3d || scene.blank.edge != EdgeCondition::kFree) {
+    throw InputError(fmt::format(
+        "{}: data set '{}' (cup_height_profile) needs a 3D cup: {} must have geometry = "
+        "\"shell3d\" and blank.edge = \"free\"",
+        d.where, name, source));
+  }
+  for (const ParameterSpec& p : config.parameters) {
+    if (p.fixed) continue;
+    if (p.address.rfind("blank.", 0) == 0 ||
+        p.address == "material.anisotropy.rolling_direction_deg") {
+      throw InputError(fmt::format(
+          "{}: parameter '{}' moves the blank or the rolling direction, with which data set '{}' "
+          "(cup_height_profile) identifies the rim: it cannot be calibrated from a cup profile",
+          p.where, p.address, name));
+    }
+  }
+}
+
 // Data that the scenes cannot produce, and parameter bounds the scenes reject, are
 // configuration errors too: found here rather than as failed runs.
 void check_against_scenes(const CalibrationConfig& config,
@@ -77,6 +100,10 @@ void check_against_scenes(const CalibrationConfig& config,
     const SceneBinding& binding = bindings[scene_index(config, d)];
     const Scene scene = binding.base_scene();
     const Measurement& m = d.measurement;
+    if (m.kind == MeasurementKind::kCupHeightProfile) {
+      check_cup_profile_data(config, d, binding.source(), scene);
+      continue;
+    }
     const double needed = m.kind == MeasurementKind::kLoadTravel ? m.x.back() : m.travel_mm;
     if (needed > scene.process.punch_travel_mm * (1.0 + 1e-12)) {
       throw InputError(
@@ -84,7 +111,7 @@ void check_against_scenes(const CalibrationConfig& config,
                       "at process.punch_travel_mm = {} mm",
                       d.where, m.name, needed, binding.source(), scene.process.punch_travel_mm));
     }
-    if (m.kind != MeasurementKind::kLoadTravel && m.x.back() > scene.blank.radius_mm) {
+    if (is_strain_profile(m.kind) && m.x.back() > scene.blank.radius_mm) {
       throw InputError(fmt::format("{}: data set '{}' has r0_mm = {} beyond the blank radius {} mm",
                                    d.where, m.name, m.x.back(), scene.blank.radius_mm));
     }
@@ -111,12 +138,18 @@ void check_against_scenes(const CalibrationConfig& config,
   }
 }
 
-std::vector<DataSet> make_data_sets(const CalibrationConfig& config) {
+std::vector<DataSet> make_data_sets(const CalibrationConfig& config,
+                                    const std::vector<SceneBinding>& bindings) {
   std::vector<DataSet> sets;
   for (const auto& d : config.data) {
     DataSet set;
     set.measurement = d.measurement;
     set.scene = scene_index(config, d);
+    if (d.measurement.kind == MeasurementKind::kCupHeightProfile) {
+      set.scene_spec = std::make_shared<const Scene>(
+          bindings.at(static_cast<std::size_t>(set.scene)).base_scene());
+    }
+    set.shape_only = d.shape_only;
     for (std::size_t i = 0; i < d.measurement.x.size(); ++i) {
       const double w = !d.measurement.point_sigma.empty() ? 1.0 / d.measurement.point_sigma[i]
                        : d.weight > 0.0                   ? d.weight
@@ -140,9 +173,14 @@ std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evalua
     fit.x = m.x;
     fit.measured = m.y;
     fit.weight = d.weights;
-    const SimulatedCurve curve = simulate_curve(m, e.runs.at(d.scene));
+    const SimulatedCurve curve = data_set_curve(d, e.runs.at(d.scene));
     fit.ok = curve.ok;
     fit.simulated = curve.ok ? curve.y : std::vector<double>(m.x.size(), kNaN);
+    fit.shape_only = d.shape_only;
+    if (curve.ok && d.shape_only) {
+      const SimulatedCurve raw = simulate_curve(m, e.runs.at(d.scene), d.scene_spec.get());
+      fit.shape_offset_mm = raw.ok && !raw.y.empty() ? curve.y.front() - raw.y.front() : kNaN;
+    }
     double sum_sq = 0.0, cost = 0.0;
     for (std::size_t i = 0; i < m.x.size(); ++i) {
       const double diff = fit.simulated[i] - m.y[i];
@@ -398,7 +436,7 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
          d.sigma == 0.0 && d.weight == 0.0 && d.measurement.point_sigma.empty()});
   }
   const ForwardModel model_for_alternatives = config.model_forms.empty() ? ForwardModel{} : model;
-  ResidualPipeline pipeline(make_data_sets(config));
+  ResidualPipeline pipeline(make_data_sets(config, bindings));
   const Eigen::VectorXd noise = residual_noise(config, bindings, pipeline);
   ForwardCache cache(std::move(model), std::move(bindings), config.parameters, std::move(pipeline),
                      config.optimizer.threads);

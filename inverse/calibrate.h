@@ -40,8 +40,11 @@ struct DataSetFit {
   double travel_mm = 0.0;
   std::vector<double> x, measured, simulated, weight;
   double cost = 0.0;            // 0.5 sum of weighted squared residuals
-  double rms_difference = 0.0;  // sqrt(mean((simulated - measured)^2)), in N or strain
+  double rms_difference = 0.0;  // sqrt(mean((simulated - measured)^2)), in N, strain or mm
   bool ok = false;
+  // cup_height_profile with shape_only: `simulated` includes this offset (cup_height_curve.h).
+  bool shape_only = false;
+  double shape_offset_mm = 0.0;
   LackOfFit lack_of_fit;  // of weight x (simulated - measured), in abscissa order
 };
 

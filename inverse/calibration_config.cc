@@ -262,6 +262,8 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
   const auto travel = reader.number("travel_mm");
   const auto name = reader.string("name");
   d.scene = reader.string("scene").value_or("");
+  const auto source = reader.string("source");
+  const auto shape_only = reader.boolean("shape_only");
   MeasurementColumns columns;
   if (const toml::table* mapping = reader.table("columns")) {
     for (const auto& [key, node] : *mapping) {
@@ -284,19 +286,33 @@ DataSpec read_data(const toml::table& t, const std::string& file, const std::str
   }
   const MeasurementKind kind = measurement_kind_from_string(*kind_name, reader.where_key("kind"));
 
+  if (source && source->find_first_not_of(" \t") == std::string::npos) {
+    throw InputError(fmt::format("{}: must not be empty", reader.where_key("source")));
+  }
+  if (shape_only && kind != MeasurementKind::kCupHeightProfile) {
+    throw InputError(fmt::format("{}: shape_only applies to cup_height_profile data, not to {}",
+                                 reader.where_key("shape_only"), *kind_name));
+  }
+  d.shape_only = shape_only.value_or(false);
   try {
-    d.measurement = read_measurement_csv(resolve(base_dir, *data_file), kind, columns);
+    MeasurementReadOptions read_options;
+    read_options.columns = columns;
+    read_options.source = source.value_or("");
+    d.measurement = read_measurement_file(resolve(base_dir, *data_file), kind, read_options);
   } catch (const InputError& e) {
     if (columns.empty()) throw;
     throw InputError(
         fmt::format("{} (columns mapped at {})", e.what(), reader.where_key("columns")));
   }
   d.measurement.name = name.value_or(fs::path(*data_file).stem().string());
-  if (kind == MeasurementKind::kLoadTravel && travel) {
-    throw InputError(fmt::format("{}: travel_mm applies to profiles, not to load_travel data",
-                                 reader.where_key("travel_mm")));
+  if (!is_strain_profile(kind) && travel) {
+    throw InputError(fmt::format("{}: travel_mm applies to strain profiles, not to {} data{}",
+                                 reader.where_key("travel_mm"), *kind_name,
+                                 kind == MeasurementKind::kCupHeightProfile
+                                     ? " (compared with the run's final rim profile)"
+                                     : ""));
   }
-  if (kind != MeasurementKind::kLoadTravel) {
+  if (is_strain_profile(kind)) {
     const double in_file = d.measurement.travel_mm;  // vshell strains files state it
     if (travel && in_file > 0.0 && std::abs(*travel - in_file) > 1e-6 * std::max(1.0, in_file)) {
       throw InputError(fmt::format("{}: travel_mm = {} but {} was written at {} mm",
@@ -452,7 +468,9 @@ CalibrationConfig load_calibration_config(const std::string& path) {
 
 DataSigma data_set_sigma(const DataSpec& d) {
   const Measurement& m = d.measurement;
-  const std::string unit = m.kind == MeasurementKind::kLoadTravel ? " N" : "";
+  const std::string unit = m.kind == MeasurementKind::kLoadTravel         ? " N"
+                           : m.kind == MeasurementKind::kCupHeightProfile ? " mm"
+                                                                          : "";
   if (!m.point_sigma.empty()) return {0.0, "sigma per point (the file's sigma column)"};
   if (d.sigma > 0.0) return {d.sigma, fmt::format("sigma = {:.4g}{} (given)", d.sigma, unit)};
   if (d.weight > 0.0) return {0.0, fmt::format("weight = {:.4g} (given)", d.weight)};
@@ -465,7 +483,7 @@ DataSigma data_set_sigma(const DataSpec& d) {
     throw InputError(fmt::format(
         "{}: data set '{}' gives no sigma, weight or sigma column, and its measured values do "
         "not vary, so the default sigma (relative_sigma x their range) would be 0: set sigma "
-        "(its standard deviation, in N or strain) or weight",
+        "(its standard deviation, in N, strain or mm) or weight",
         d.where, m.name));
   }
   const double sigma = d.relative_sigma * range;
@@ -551,7 +569,7 @@ void validate_calibration_config(const CalibrationConfig& config) {
       throw InputError(fmt::format("{}: data set '{}': {} must be >= 0", d.where, m.name,
                                    abscissa_name(m.kind)));
     }
-    if (m.kind != MeasurementKind::kLoadTravel && !(m.travel_mm > 0.0)) {
+    if (is_strain_profile(m.kind) && !(m.travel_mm > 0.0)) {
       throw InputError(fmt::format("{}: data set '{}': travel_mm must be > 0", d.where, m.name));
     }
     if (config.scenes.size() > 1 ? !scene_names.count(d.scene)

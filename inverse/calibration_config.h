@@ -38,7 +38,8 @@ struct DataSpec {
   // Used when sigma, weight and the sigma column are all absent: sigma = relative_sigma x the
   // range of the measured ordinate (data_set_sigma()).
   double relative_sigma = kDefaultRelativeSigma;
-  std::string where;  // config file:line
+  bool shape_only = false;  // cup_height_profile: fit up to a constant offset (cup_height_curve.h)
+  std::string where;        // config file:line
 };
 
 // How a data set's points are weighted, for the weights and the report.

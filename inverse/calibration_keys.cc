@@ -95,21 +95,40 @@ std::vector<KeySpec> build() {
       "Hold the parameter at initial instead of identifying it."));
 
   const std::string_view d = "data";
-  k.push_back(choice(d, "kind", {"load_travel", "thickness_strain", "circumferential_strain"},
-                     nullptr,
-                     "What the file measures: punch force against punch travel, or a strain "
-                     "profile against the initial radius r0 at one punch travel."));
+  k.push_back(choice(
+      d, "kind",
+      {"load_travel", "thickness_strain", "circumferential_strain", "cup_height_profile"}, nullptr,
+      "What the file measures: punch force against punch travel, a strain "
+      "profile against the initial radius r0 at one punch travel, or the cup "
+      "height (earing profile) against the angle from the rolling direction at "
+      "the end of a 3D cup draw (compared with the run's final rim profile, "
+      "interpolated periodically at the measured angles)."));
   k.back().required = true;
   k.push_back(required(d, "file", kString,
                        "Measurement CSV, relative to this file: the format below, or a vshell "
-                       "output file (load_travel.csv, strains_travel_<T>mm.csv) as written."));
+                       "output file (load_travel.csv, strains_travel_<T>mm.csv, "
+                       "cup_profile.csv) as written; cup_height_profile also reads the "
+                       "headerless 2-column form 'angle_from_rd_deg, cup_height_mm' (deg, mm) "
+                       "of the ESAFORM 2021 file."));
   k.push_back(key(
-      d, "sigma", kFloat, "N or 1", open_above(0), [] { return std::string(""); },
+      d, "source", kString, "", Range{}, [] { return std::string(""); },
+      "Provenance of a file without a '# source:' line (e.g. the headerless ESAFORM "
+      "profile, whose provenance is its folder's README): where the data come from. A file "
+      "with its own '# source:' line cannot have this too."));
+  k.push_back(key(
+      d, "shape_only", kBool, "", Range{}, [] { return std::string("false"); },
+      "cup_height_profile only: fit the profile's shape, up to the best constant offset "
+      "(the weighted mean of measured - simulated is added to the simulated heights), so "
+      "that the mean cup height, which friction and hardening set more than the r-values, "
+      "drops out."));
+  k.push_back(key(
+      d, "sigma", kFloat, "N, 1 or mm", open_above(0), [] { return std::string(""); },
       "Standard deviation of every point, in the ordinate's internal unit (N for "
-      "forces, 1 for strains); weights are 1 / sigma. Give sigma, weight or a sigma "
+      "forces, 1 for strains, mm for cup heights); weights are 1 / sigma. Give sigma, weight or a "
+      "sigma "
       "column, or leave all out for the relative default (relative_sigma)."));
   k.push_back(key(
-      d, "weight", kFloat, "1/N or 1", open_above(0), [] { return std::string(""); },
+      d, "weight", kFloat, "1/N, 1 or 1/mm", open_above(0), [] { return std::string(""); },
       "Weight of every point instead of sigma (residual = weight x difference)."));
   k.push_back(key(
       d, "relative_sigma", kFloat, "", open_closed(0, 1),
@@ -119,8 +138,9 @@ std::vector<KeySpec> build() {
       "different quantities weigh alike. The report states the sigma used."));
   k.push_back(key(
       d, "travel_mm", kFloat, "mm", open_above(0), [] { return std::string(""); },
-      "Profiles only: the punch travel the profile was taken at. Read from the "
-      "'# punch_travel_mm=' line of a vshell strains file when omitted."));
+      "Strain profiles only: the punch travel the profile was taken at. Read from the "
+      "'# punch_travel_mm=' line of a vshell strains file when omitted. (A cup height "
+      "profile is always the run's final one.)"));
   k.push_back(key(
       d, "name", kString, "", Range{}, [] { return std::string("(file name without .csv)"); },
       "Label in reports and fit_<name>.csv: letters, digits, _ - ."));
@@ -131,7 +151,8 @@ std::vector<KeySpec> build() {
       d, "columns", KeyType::kTable, "", Range{}, [] { return std::string(""); },
       "Column mapping for files with other headers: { NAME = \"header in the file\", "
       "... } with NAME one of punch_travel_mm, punch_force_N, punch_force_kN "
-      "(load_travel), r0_mm, eps_thickness, eps_circumferential (profiles), sigma. "
+      "(load_travel), r0_mm, eps_thickness, eps_circumferential (profiles), "
+      "angle_from_rd_deg, cup_height_mm (cup_height_profile), sigma. "
       "Unmapped columns of the file are then ignored."));
 
   const std::string_view o = "optimizer";
@@ -354,14 +375,16 @@ std::string calibration_reference_markdown() {
       "increasing. Lines starting with `#` before the header are provenance `# key: value`; "
       "`# source:` and `# units:` are required. The units line names the unit of each column "
       "(any order; remarks in parentheses are ignored) and must match the columns: `mm` for "
-      "`punch_travel_mm` and `r0_mm`, `N` or `kN` for the force, `1` or `-` for strains. A "
+      "`punch_travel_mm` and `r0_mm`, `N` or `kN` for the force, `1` or `-` for strains, "
+      "`deg` for `angle_from_rd_deg` and `mm` for `cup_height_mm`. A "
       "UTF-8 byte order mark is skipped; invisible characters in a header (tabs, no-break "
       "spaces) are named in the error (`U+0009 TAB`).\n\n"
       "| kind | columns |\n|---|---|\n"
       "| `load_travel` | `punch_travel_mm`, `punch_force_N` or `punch_force_kN`, optional "
       "`sigma` |\n"
       "| `thickness_strain` | `r0_mm`, `eps_thickness`, optional `sigma` |\n"
-      "| `circumferential_strain` | `r0_mm`, `eps_circumferential`, optional `sigma` |\n\n"
+      "| `circumferential_strain` | `r0_mm`, `eps_circumferential`, optional `sigma` |\n"
+      "| `cup_height_profile` | `angle_from_rd_deg`, `cup_height_mm`, optional `sigma` |\n\n"
       "`sigma` is the per-point standard deviation in the unit of the ordinate column as "
       "written (kN for `punch_force_kN`). Other headers: map them with `columns`.\n\n"
       "vshell's own outputs are accepted as they are written: `load_travel.csv` (kind "
@@ -369,6 +392,23 @@ std::string calibration_reference_markdown() {
       "`thickness_strain` or `circumferential_strain`; `travel_mm` from its "
       "`# punch_travel_mm=` line). They need no provenance lines; their other columns are "
       "ignored.\n\n"
+      "### Cup height profiles\n\n"
+      "`cup_height_profile` data are the cup height around the rim of a drawn cup against the "
+      "angle from the rolling direction (angles in [0, 360], increasing, spanning less than one "
+      "turn). They are compared with the run's FINAL rim profile (the `cup_profile.csv` the run "
+      "writes: a quarter model unfolded to 360 deg), read as a periodic piecewise-linear function "
+      "of the angle (joined across 0/360) at the measured angles; the scene must be a 3D cup "
+      "(`geometry = \"shell3d\"`, free blank edge), a run that did not complete or has no rim "
+      "profile is a failed evaluation with the reason, and parameters may not move `blank.*` or "
+      "the rolling direction (the rim is identified with the configured scene). Besides the CSV "
+      "form, the headerless 2-column form of the ESAFORM 2021 file is read: every line `angle, "
+      "height` in deg and mm (comma and/or spaces); its provenance is a `# source:` line or the "
+      "data set's `source` key. A run's own `cup_profile.csv` is read as written. "
+      "`shape_only = true` compares the profile up to the best constant offset (the weighted "
+      "mean of measured - simulated, added to the simulated heights and reported as "
+      "`shape_offset_mm`): the mean height, set by friction and hardening as much as by the "
+      "r-values, then drops out (the degrees of freedom of the intervals still count the "
+      "points, not the points minus one).\n\n"
       "## Weights\n\n"
       "Residuals are `weight x (simulated - measured)` with weight = 1 / sigma per point "
       "(the `sigma` column), per data set (`sigma`), or `weight`. With none of these the "

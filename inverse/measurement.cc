@@ -34,6 +34,20 @@ std::vector<std::string> split_commas(const std::string& line) {
   return cells;
 }
 
+// Rows of the headerless cup-profile form: comma-separated (spaces around allowed) or, without a
+// comma, separated by spaces.
+std::vector<std::string> split_fields(const std::string& line) {
+  if (line.find(',') != std::string::npos) return split_commas(line);
+  std::vector<std::string> cells;
+  std::size_t start = line.find_first_not_of(" \t");
+  while (start != std::string::npos) {
+    const auto end = line.find_first_of(" \t", start);
+    cells.push_back(line.substr(start, end - start));
+    start = line.find_first_not_of(" \t", end);
+  }
+  return cells;
+}
+
 // The whole cell must be a number: "1.5x" or "" are errors, not 1.5 or 0.
 std::optional<double> parse_number(const std::string& cell) {
   double value = 0.0;
@@ -52,6 +66,8 @@ std::vector<std::pair<std::string, double>> accepted_ordinates(MeasurementKind k
       return {{"eps_thickness", 1.0}};
     case MeasurementKind::kCircumferentialStrain:
       return {{"eps_circumferential", 1.0}};
+    case MeasurementKind::kCupHeightProfile:
+      return {{"cup_height_mm", 1.0}};
   }
   return {};
 }
@@ -159,7 +175,8 @@ std::vector<std::string> parse_units(const std::string& text) {
 
 // The "# units:" line must name only known units and include the unit of each column used.
 void check_units(const std::string& text, const Columns& columns, const std::string& where) {
-  static const std::vector<std::string> kKnown = {"mm", "N", "kN", "1", "-", "MPa", "s", "mm/s"};
+  static const std::vector<std::string> kKnown = {"mm",  "N", "kN",   "1",  "-",
+                                                  "MPa", "s", "mm/s", "deg"};
   const std::vector<std::string> units = parse_units(text);
   for (const std::string& u : units) {
     if (std::find(kKnown.begin(), kKnown.end(), u) == kKnown.end()) {
@@ -176,13 +193,18 @@ void check_units(const std::string& text, const Columns& columns, const std::str
   const std::string& y = columns.ordinate_name;
   const bool force_N = y == "punch_force_N";
   const bool force_kN = y == "punch_force_kN";
-  const char* y_unit = force_N ? "N" : force_kN ? "kN" : "1 (or -)";
-  const bool y_ok = force_N ? has({"N"}) : force_kN ? has({"kN"}) : has({"1", "-"});
-  if (!has({"mm"}) || !y_ok) {
+  const bool height = y == "cup_height_mm";
+  const char* y_unit = force_N ? "N" : force_kN ? "kN" : height ? "mm" : "1 (or -)";
+  const bool y_ok = force_N    ? has({"N"})
+                    : force_kN ? has({"kN"})
+                    : height   ? has({"mm"})
+                               : has({"1", "-"});
+  const char* x_unit = height ? "deg" : "mm";
+  if (!has({x_unit}) || !y_ok) {
     throw InputError(fmt::format(
-        "{}: units '{}' do not match the columns: the abscissa is in mm and {} in {} (the units "
+        "{}: units '{}' do not match the columns: the abscissa is in {} and {} in {} (the units "
         "line names the unit of each column)",
-        where, text, y, y_unit));
+        where, text, x_unit, y, y_unit));
   }
 }
 
@@ -196,28 +218,62 @@ std::string to_string(MeasurementKind kind) {
       return "thickness_strain";
     case MeasurementKind::kCircumferentialStrain:
       return "circumferential_strain";
+    case MeasurementKind::kCupHeightProfile:
+      return "cup_height_profile";
   }
   return "?";
 }
 
 MeasurementKind measurement_kind_from_string(const std::string& name, const std::string& context) {
   for (auto kind : {MeasurementKind::kLoadTravel, MeasurementKind::kThicknessStrain,
-                    MeasurementKind::kCircumferentialStrain}) {
+                    MeasurementKind::kCircumferentialStrain, MeasurementKind::kCupHeightProfile}) {
     if (to_string(kind) == name) return kind;
   }
   throw InputError(fmt::format(
-      "{}: unknown data kind '{}' (load_travel, thickness_strain, circumferential_strain)", context,
-      name));
+      "{}: unknown data kind '{}' (load_travel, thickness_strain, circumferential_strain, "
+      "cup_height_profile)",
+      context, name));
 }
 
 std::string abscissa_name(MeasurementKind kind) {
-  return kind == MeasurementKind::kLoadTravel ? "punch_travel_mm" : "r0_mm";
+  switch (kind) {
+    case MeasurementKind::kLoadTravel:
+      return "punch_travel_mm";
+    case MeasurementKind::kCupHeightProfile:
+      return "angle_from_rd_deg";
+    default:
+      return "r0_mm";
+  }
 }
 
 std::string ordinate_name(MeasurementKind kind) { return accepted_ordinates(kind).front().first; }
 
+bool is_strain_profile(MeasurementKind kind) {
+  return kind == MeasurementKind::kThicknessStrain ||
+         kind == MeasurementKind::kCircumferentialStrain;
+}
+
+std::string ordinate_unit(MeasurementKind kind) {
+  switch (kind) {
+    case MeasurementKind::kLoadTravel:
+      return "N";
+    case MeasurementKind::kCupHeightProfile:
+      return "mm";
+    default:
+      return "1";
+  }
+}
+
 Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
                                  const MeasurementColumns& mapping) {
+  MeasurementReadOptions options;
+  options.columns = mapping;
+  return read_measurement_file(path, kind, options);
+}
+
+Measurement read_measurement_file(const std::string& path, MeasurementKind kind,
+                                  const MeasurementReadOptions& options) {
+  const MeasurementColumns& mapping = options.columns;
   check_text_input_file(path, "measurement file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open measurement file", path));
@@ -227,6 +283,7 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
   m.file = path;
   std::optional<Columns> columns;
   bool vshell_output = false;  // load_travel.csv or strains_travel_<T>mm.csv as written
+  bool headerless = false;     // the 2-column cup-profile form (angle, height)
   std::string units_text;
   int units_line = 0;
   std::string line;
@@ -262,7 +319,28 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
       }
       continue;
     }
-    const auto cells = split_commas(text);
+    auto cells = headerless ? split_fields(text) : split_commas(text);
+    if (!columns && kind == MeasurementKind::kCupHeightProfile && mapping.empty()) {
+      // The headerless form: the first row holds two numbers; it is read as a row below.
+      const auto fields = split_fields(text);
+      const bool numbers = std::all_of(fields.begin(), fields.end(), [](const std::string& f) {
+        return parse_number(f).has_value();
+      });
+      if (numbers && fields.size() != 2) {
+        throw InputError(
+            fmt::format("{}: a headerless cup profile has 2 numbers per row (angle_from_rd_deg, "
+                        "cup_height_mm), found {}",
+                        where, fields.size()));
+      }
+      if (numbers) {
+        headerless = true;
+        cells = fields;
+        columns = Columns{0, 1, -1, 1.0, ordinate_name(kind), 2};
+        if (units_line > 0) {
+          check_units(units_text, *columns, fmt::format("{}:{}", path, units_line));
+        }
+      }
+    }
     if (!columns) {
       // vshell's load_travel.csv starts step,time_s,punch_travel_mm,...
       vshell_output = vshell_output || (cells.size() > 3 && cells[0] == "step" &&
@@ -296,6 +374,13 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
       throw InputError(fmt::format("{}: {} = {} does not increase (previous {})", where,
                                    abscissa_name(kind), x, m.x.back()));
     }
+    if (kind == MeasurementKind::kCupHeightProfile &&
+        (x < 0.0 || x > 360.0 || (!m.x.empty() && !(x - m.x.front() < 360.0)))) {
+      throw InputError(fmt::format(
+          "{}: angle_from_rd_deg = {} must lie in [0, 360] and less than 360 deg after the first "
+          "angle {} (no angle twice modulo 360)",
+          where, x, m.x.empty() ? x : m.x.front()));
+    }
     m.x.push_back(x);
     m.y.push_back(value_at(columns->ordinate) * columns->ordinate_factor);
     if (columns->sigma >= 0) {
@@ -311,13 +396,31 @@ Measurement read_measurement_csv(const std::string& path, MeasurementKind kind,
     }
     return false;
   };
+  if (!options.source.empty()) {
+    if (has_key("source")) {
+      throw InputError(fmt::format(
+          "{}: the file has a '# source:' line and data.source gives one too: state it once",
+          path));
+    }
+    m.provenance.emplace(m.provenance.begin(), "source", options.source);
+  }
+  if (headerless && !has_key("units")) {
+    m.provenance.emplace_back("units", "deg, mm (headerless angle_from_rd_deg, cup_height_mm)");
+  }
   if (vshell_output) {
     if (!has_key("source")) m.provenance.emplace_back("source", "vshell run output " + path);
-    if (!has_key("units")) m.provenance.emplace_back("units", "mm, N, 1 (vshell output)");
+    if (!has_key("units")) {
+      m.provenance.emplace_back("units", kind == MeasurementKind::kCupHeightProfile
+                                             ? "deg, mm (vshell output)"
+                                             : "mm, N, 1 (vshell output)");
+    }
   } else if (!has_key("source") || !has_key("units")) {
     throw InputError(fmt::format(
-        "{}: provenance lines '# source: ...' and '# units: ...' are required before the header",
-        path));
+        "{}: provenance lines '# source: ...' and '# units: ...' are required before the header{}",
+        path,
+        kind == MeasurementKind::kCupHeightProfile
+            ? " (a headerless angle, height file may give the source as data.source instead)"
+            : ""));
   }
   if (!columns) throw InputError(fmt::format("{}: no header line", path));
   if (m.x.empty()) throw InputError(fmt::format("{}: no data rows", path));

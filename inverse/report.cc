@@ -52,7 +52,11 @@ std::vector<Eigen::Index> finite_rows(const Eigen::MatrixXd& covariance,
 }
 
 std::string axis_label(MeasurementKind kind, bool ordinate) {
-  if (!ordinate) return kind == MeasurementKind::kLoadTravel ? "punch travel [mm]" : "r0 [mm]";
+  if (!ordinate) {
+    return kind == MeasurementKind::kLoadTravel         ? "punch travel [mm]"
+           : kind == MeasurementKind::kCupHeightProfile ? "angle from the rolling direction [deg]"
+                                                        : "r0 [mm]";
+  }
   switch (kind) {
     case MeasurementKind::kLoadTravel:
       return "punch force [N]";
@@ -60,14 +64,24 @@ std::string axis_label(MeasurementKind kind, bool ordinate) {
       return "thickness strain [-]";
     case MeasurementKind::kCircumferentialStrain:
       return "circumferential strain [-]";
+    case MeasurementKind::kCupHeightProfile:
+      return "cup height [mm]";
   }
   return "";
 }
 
 std::string fit_csv(const DataSetFit& fit) {
   std::string text = fmt::format("# data set: {} ({})\n", fit.name, to_string(fit.kind));
-  if (fit.kind != MeasurementKind::kLoadTravel) {
+  if (is_strain_profile(fit.kind)) {
     text += fmt::format("# punch travel: {} mm\n", format_number(fit.travel_mm));
+  }
+  if (fit.kind == MeasurementKind::kCupHeightProfile) {
+    text += "# final rim profile of the run, interpolated periodically at the measured angles\n";
+    if (fit.shape_only) {
+      text +=
+          fmt::format("# shape only: simulated heights shifted by the best constant offset {} mm\n",
+                      format_number(fit.shape_offset_mm));
+    }
   }
   const std::string y = ordinate_name(fit.kind);
   text +=
@@ -82,8 +96,9 @@ std::string fit_csv(const DataSetFit& fit) {
 
 SvgFigure fit_figure(const DataSetFit& fit) {
   SvgFigure figure;
-  figure.title = fit.kind == MeasurementKind::kLoadTravel
-                     ? fmt::format("{}: measured and fitted", fit.name)
+  figure.title = !is_strain_profile(fit.kind)
+                     ? fmt::format("{}: measured and fitted{}", fit.name,
+                                   fit.shape_only ? " (shape only: offset removed)" : "")
                      : fmt::format("{} at {} mm travel: measured and fitted", fit.name,
                                    format_number(fit.travel_mm));
   figure.x_label = axis_label(fit.kind, false);
@@ -235,8 +250,12 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
         {"name", fit.name}, {"kind", to_string(fit.kind)}, {"points", fit.x.size()}};
     put_finite(entry, "cost", fit.cost);
     put_finite(entry, "rms_difference", fit.rms_difference);
-    entry["rms_unit"] = fit.kind == MeasurementKind::kLoadTravel ? "N" : "1";
-    if (fit.kind != MeasurementKind::kLoadTravel) entry["travel_mm"] = fit.travel_mm;
+    entry["rms_unit"] = ordinate_unit(fit.kind);
+    if (is_strain_profile(fit.kind)) entry["travel_mm"] = fit.travel_mm;
+    if (fit.kind == MeasurementKind::kCupHeightProfile) {
+      entry["shape_only"] = fit.shape_only;
+      if (fit.shape_only) put_finite(entry, "shape_offset_mm", fit.shape_offset_mm);
+    }
     const LackOfFit& l = fit.lack_of_fit;
     ordered_json lof = {{"verdict", to_string(l.verdict)}, {"points", l.points}};
     if (l.verdict != LackOfFitVerdict::kNotTested) {

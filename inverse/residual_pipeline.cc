@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cup_height_curve.h"
+
 namespace vs {
 namespace {
 
@@ -69,16 +71,35 @@ SimulatedCurve profile_curve(const Measurement& m, const RunResult& run) {
 
 }  // namespace
 
-SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& run) {
-  SimulatedCurve curve = measurement.kind == MeasurementKind::kLoadTravel
-                             ? load_curve(measurement, run)
-                             : profile_curve(measurement, run);
+SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& run,
+                              const Scene* scene) {
+  SimulatedCurve curve;
+  if (measurement.kind == MeasurementKind::kLoadTravel) {
+    curve = load_curve(measurement, run);
+  } else if (measurement.kind == MeasurementKind::kCupHeightProfile) {
+    if (scene == nullptr) {
+      curve.message = fmt::format("{}: cup_height_profile data need the scene", measurement.name);
+      return curve;
+    }
+    curve = cup_height_curve(measurement, *scene, run);
+  } else {
+    curve = profile_curve(measurement, run);
+  }
   for (double y : curve.y) {
     if (!std::isfinite(y)) {
       curve.ok = false;
       curve.message = fmt::format("{}: simulated value is not finite", measurement.name);
       break;
     }
+  }
+  return curve;
+}
+
+SimulatedCurve data_set_curve(const DataSet& d, const RunResult& run) {
+  SimulatedCurve curve = simulate_curve(d.measurement, run, d.scene_spec.get());
+  if (curve.ok && d.shape_only) {
+    const double c = shape_offset(curve.y, d.measurement.y, d.weights);
+    for (double& y : curve.y) y += c;
   }
   return curve;
 }
@@ -96,7 +117,7 @@ Residuals ResidualPipeline::residuals(const std::vector<RunResult>& runs) const 
   result.values.resize(num_residuals_);
   for (std::size_t k = 0; k < data_sets_.size(); ++k) {
     const DataSet& d = data_sets_[k];
-    const SimulatedCurve curve = simulate_curve(d.measurement, runs.at(d.scene));
+    const SimulatedCurve curve = data_set_curve(d, runs.at(d.scene));
     if (!curve.ok) {
       result.message = curve.message;
       return result;

@@ -6,11 +6,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "measurement.h"
 #include "run/run_result.h"
+#include "scene/scene.h"
 
 namespace vs {
 
@@ -18,6 +20,12 @@ struct DataSet {
   Measurement measurement;
   int scene = 0;                // index of the scene whose runs this data set is compared with
   std::vector<double> weights;  // one per point: 1/sigma or the configured weight
+  // cup_height_profile: the scene the rim is read with (blank outline, rolling direction; the
+  // scene as configured: parameters may not move those keys, calibrate() checks).
+  std::shared_ptr<const Scene> scene_spec;
+  // cup_height_profile: compare the shape only, up to the best constant offset
+  // (cup_height_curve.h).
+  bool shape_only = false;
 };
 
 // Simulated values at a data set's abscissae, or why there are none.
@@ -31,7 +39,14 @@ struct SimulatedCurve {
 // each measured travel; the run must reach the largest measured travel.
 // Profiles: the profile recorded at measurement.travel_mm, interpolated linearly in r0_mm; outside
 // the range of element midpoints the end value is used (at most half an element away).
-SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& run);
+// Cup height profiles: the final rim profile at the measured angles (cup_height_curve.h); they
+// need `scene` (else ok = false).
+SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& run,
+                              const Scene* scene = nullptr);
+
+// A data set's simulated values as compared: simulate_curve, shifted by the shape-only offset
+// when the data set asks for it (the values the residuals and fit_<name>.csv use).
+SimulatedCurve data_set_curve(const DataSet& data_set, const RunResult& run);
 
 struct Residuals {
   bool ok = false;

@@ -87,7 +87,7 @@ std::vector<Measurement> make_synthetic_measurements(const Scene& scene, const R
         }
       }
     }
-    const SimulatedCurve clean = simulate_curve(m, run);
+    const SimulatedCurve clean = simulate_curve(m, run, &scene);
     if (!clean.ok || m.x.empty()) {
       throw InputError(fmt::format("synthetic data set '{}': {}", spec.name,
                                    clean.ok ? "no abscissae" : clean.message));
@@ -104,7 +104,9 @@ std::vector<Measurement> make_synthetic_measurements(const Scene& scene, const R
         {"source", fmt::format("SYNTHETIC data, not a measurement: vs::make_synthetic_measurements "
                                "from scene {} ({})",
                                scene.source, scene.title)},
-        {"units", spec.kind == MeasurementKind::kLoadTravel ? "mm, N" : "mm, 1 (true strain)"},
+        {"units", spec.kind == MeasurementKind::kLoadTravel         ? "mm, N"
+                  : spec.kind == MeasurementKind::kCupHeightProfile ? "deg, mm"
+                                                                    : "mm, 1 (true strain)"},
         {"generating parameters", scene_parameters(scene)},
         {"noise",
          sigma > 0.0
@@ -113,7 +115,7 @@ std::vector<Measurement> make_synthetic_measurements(const Scene& scene, const R
              : std::string("none")},
         {"seed", fmt::format("{} (splitmix64 + Box-Muller, vs::GaussianNoise)", seed)},
     };
-    if (spec.kind != MeasurementKind::kLoadTravel) {
+    if (is_strain_profile(spec.kind)) {
       m.provenance.emplace_back("punch travel",
                                 fmt::format("{} mm", format_number(spec.travel_mm)));
     }

@@ -16,7 +16,8 @@ struct SyntheticDataSpec {
   MeasurementKind kind = MeasurementKind::kLoadTravel;
   std::string name;
   double travel_mm = 0.0;  // profiles: must be one of the run's profile travels
-  // Abscissae (punch_travel_mm or r0_mm); empty = the run's own steps / element midpoints.
+  // Abscissae (punch_travel_mm, r0_mm or angle_from_rd_deg); empty = the run's own steps /
+  // element midpoints (cup_height_profile: must be given).
   std::vector<double> x;
   // Noise standard deviation = noise_absolute + noise_relative * max |clean ordinate| (internal
   // units: N or strain). With noise, the per-point sigma column is written too.

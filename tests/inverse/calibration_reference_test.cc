@@ -44,6 +44,7 @@ TEST(CalibrationReference, EveryDeclaredKeyIsRead) {
   write_file(dir / "load.csv",
              "# source: t\n# units: mm, N\npunch_travel_mm,punch_force_N\n1,100\n2,200\n");
   write_file(dir / "thick.csv", "# source: t\n# units: mm, 1\nR,eps\n0,-0.1\n10,-0.2\n20,-0.1\n");
+  write_file(dir / "cup.txt", "0, 34\n45, 33\n90, 35\n");
   write_file(dir / "calibrate.toml", R"([[scene]]
 name = "a"
 file = "scene.toml"
@@ -68,6 +69,13 @@ relative_sigma = 0.02
 travel_mm = 20
 scene = "a"
 columns = { r0_mm = "R", eps_thickness = "eps" }
+[[data]]
+kind = "cup_height_profile"
+file = "cup.txt"
+source = "t"
+shape_only = true
+sigma = 0.1
+scene = "a"
 [optimizer]
 method = "global_then_local"
 max_iterations = 5
@@ -117,6 +125,8 @@ plots = false
   }
   const CalibrationConfig c = load_calibration_config((dir / "calibrate.toml").string());
   EXPECT_EQ(c.data[1].measurement.x.size(), 3u);
+  EXPECT_TRUE(c.data[2].shape_only);
+  EXPECT_EQ(c.data[2].measurement.provenance.front().second, "t");
   EXPECT_EQ(c.optimizer.global.algorithm, "crs2");
   EXPECT_EQ(c.model_forms.size(), 1u);
 }

@@ -73,7 +73,8 @@ TEST(Measurement, RejectsBadFiles) {
        "bad.csv:2: units 'mm, kN' do not match the columns: the abscissa is in mm and "
        "punch_force_N in N"},
       {"units_unknown", "# source: x\n# units: inch, lbf\npunch_travel_mm,punch_force_N\n1,2\n",
-       "bad.csv:2: unknown unit 'inch' on the units line (known: mm, N, kN, 1, -, MPa, s, mm/s)"},
+       "bad.csv:2: unknown unit 'inch' on the units line (known: mm, N, kN, 1, -, MPa, s, mm/s, "
+       "deg)"},
       {"units_free_text", "# source: x\n# units: whatever\npunch_travel_mm,punch_force_N\n1,2\n",
        "unknown unit 'whatever'"},
       {"tab_separated", h + "punch_travel_mm\tpunch_force_N\n1\t2\n",
