@@ -246,6 +246,8 @@ constexpr int kTwinElements = 50;  // 1.08 mm meridian elements (the bundled fix
 Scene cup_3d(double gap_mm) {
   Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/esaform_cup_3d_quarter.toml");
   s.blank.divisions = 4;
+  s.numerics.max_travel_increment_mm =
+      0.25;  // the default grid, on which the figures were measured
   s.process.punch_travel_mm = kTravelMm;
   s.process.output_travels_mm = {kTravelMm};
   for (ToolSpec& t : s.tools)
