@@ -175,7 +175,9 @@ void Shell3dStepper::attach(FormingState& s, int node, int tool) const {
   const auto p = model_.project(tool, s.x[node], s.thickness[node], model_.on_axis(node));
   NodeContact3& c = s.contact[node];
   const double keep = c.tool == tool ? c.normal_force_N : 0.0;
+  const double keep_holder = c.tool == tool ? c.holder_force_N : 0.0;
   c = NodeContact3{};
+  c.holder_force_N = keep_holder;
   c.tool = tool;
   c.normal = p.normal;
   c.normal_force_N = keep;
