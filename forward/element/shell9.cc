@@ -284,6 +284,16 @@ void mitc9_assumed_poly(const Mitc9Tying& ty, double r, double s, int n, CovPoly
   }
 }
 
+// Components (s11, s22, s12) of P S P^T for the plane tensor S = [[v0, v2], [v2, v1]] and the 2x2
+// matrix P (row by row).
+Vec3 projected(const Vec3& v, const std::array<double, 4>& P) {
+  Eigen::Matrix2d p, s;
+  p << P[0], P[1], P[2], P[3];
+  s << v(0), v(2), v(2), v(1);
+  const Eigen::Matrix2d m = p * s * p.transpose();
+  return Vec3(m(0, 0), m(1, 1), 0.5 * (m(0, 1) + m(1, 0)));
+}
+
 // Point basis at thickness coordinate t of a surface point (as point_basis()).
 struct Basis {
   double detJ;
@@ -491,6 +501,8 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
         covariant_poly(g, sh, sp, n, &ws.assumed);
       }
       const CovPoly& A = ws.assumed;
+      const Mat3 mid = basis_at(sp, 0.0).frame;  // of the resultants
+      ops->frame[static_cast<std::size_t>(ip)] = mid;
       for (int k = 0; k < nt; ++k) {
         const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
         const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
@@ -510,8 +522,14 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
           ops->flow.back().rd_cos = c / len;
           ops->flow.back().rd_sin = sn / len;
         }
+        if (t != 0.0) {
+          Shell9Operators::FlowRow& f = ops->flow.back();
+          f.turned = true;
+          for (int u = 0; u < 2; ++u)
+            for (int w = 0; w < 2; ++w)
+              f.to_mid[static_cast<std::size_t>(2 * u + w)] = mid.col(u).dot(b.frame.col(w));
+        }
         rows += 3;
-        if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
         if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
       }
     }
@@ -583,8 +601,9 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
     if (want_k) ws.DL.middleRows(fr.row, 3).noalias() = (fr.dV * p.D) * ops.L.middleRows(fr.row, 3);
     out->potential += p.potential * fr.dV;
     Shell9Resultant& res = out->resultant[static_cast<std::size_t>(fr.point)];
-    res.N += fr.dz * p.stress;
-    res.M += fr.arm * p.stress;
+    const Vec3 sm = fr.turned ? projected(p.stress, fr.to_mid) : p.stress;
+    res.N += fr.dz * sm;
+    res.M += fr.arm * sm;
   }
   for (int ip = 0; ip < ops.inplane_points; ++ip) {
     out->resultant[static_cast<std::size_t>(ip)].frame = ops.frame[static_cast<std::size_t>(ip)];

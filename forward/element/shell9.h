@@ -91,6 +91,9 @@ struct Shell9State {
 enum class Shell9Stiffness { kSecant, kTangent, kNone };
 
 struct Shell9Resultant {
+  // Sums over the thickness of the point stresses, each projected from its own frame (e1 along
+  // g_r(t), which turns with t on a curved, twisted element) onto `frame`: tensors, independent
+  // of the element's parametrisation.
   Vec3 N = Vec3::Zero();          // membrane forces (N11, N22, N12) [N/mm], local frame
   Vec3 M = Vec3::Zero();          // moments int s z dz [N], z along e3
   Mat3 frame = Mat3::Identity();  // local frame (columns e1, e2, e3) at the mid-surface
@@ -124,6 +127,11 @@ struct Shell9Operators {
     // Planar anisotropy: RD at the angle a from the point's e1, (cos a, sin a) (RD along e1
     // without material axes).
     double rd_cos = 1.0, rd_sin = 0.0;
+    // Resultants: the point's in-plane axes (e1, e2) in the mid-surface frame (E1, E2) of its
+    // in-plane point, P = [[E1.e1, E1.e2], [E2.e1, E2.e2]] row by row: the stress S of the point
+    // enters the sums as P S P^T (the projection of the tensor onto the mid-surface frame).
+    bool turned = false;  // P != I
+    std::array<double, 4> to_mid{1.0, 0.0, 0.0, 1.0};
   };
   struct ShearRow {
     int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
@@ -138,7 +146,7 @@ struct Shell9Operators {
   Eigen::MatrixXd L;
   std::vector<FlowRow> flow;
   std::vector<ShearRow> shear;
-  std::vector<Mat3> frame;  // local frame at the middle thickness point of each in-plane point
+  std::vector<Mat3> frame;  // local frame on the mid-surface (t = 0) at each in-plane point
   std::vector<std::array<double, 9>> shape;  // shape functions N_a at each in-plane point
   std::vector<DrillNode> drill;
 };
