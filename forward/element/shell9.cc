@@ -51,24 +51,18 @@ const Gauss& gauss(int n) {
   return n == 2 ? g2 : g3;
 }
 
-}  // namespace
-
-Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
-                                                    const std::vector<Vec3>& membrane) {
+// shell9_stress_stiffness with the membrane tensor of in-plane point ip in the point's local frame
+// (e1, e2) from local(ip, e1, e2).
+template <class Local>
+Eigen::Matrix<double, 9, 9> stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                             std::size_t points, const Local& local) {
   Eigen::Matrix<double, 9, 9> k = Eigen::Matrix<double, 9, 9>::Zero();
   const Gauss& q = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
-  assert(static_cast<int>(membrane.size()) == q.n * q.n);
+  assert(static_cast<int>(points) == q.n * q.n);
+  static_cast<void>(points);
   int ip = 0;
   for (int j = 0; j < q.n; ++j) {
     for (int i = 0; i < q.n; ++i, ++ip) {
-      const Vec3& m = membrane[static_cast<std::size_t>(ip)];
-      Eigen::Matrix2d N;
-      N << m(0), m(2), m(2), m(1);
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(N);
-      const Eigen::Vector2d lam = eig.eigenvalues().cwiseMax(0.0);
-      if (lam.maxCoeff() <= 0.0) continue;
-      const Eigen::Matrix2d Np =
-          eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose();
       const Shape9 sh = lagrange9(q.x[i], q.x[j]);
       Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
       for (int a = 0; a < 9; ++a) {
@@ -79,6 +73,12 @@ Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, She
       const double area = n.norm();
       const Vec3 e1 = gr.normalized();
       const Vec3 e2 = (n / area).cross(e1);
+      const Eigen::Matrix2d N = local(static_cast<std::size_t>(ip), e1, e2);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(N);
+      const Eigen::Vector2d lam = eig.eigenvalues().cwiseMax(0.0);
+      if (lam.maxCoeff() <= 0.0) continue;
+      const Eigen::Matrix2d Np =
+          eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose();
       Eigen::Matrix2d J;  // d(x1, x2)/d(r, s)
       J << gr.dot(e1), gs.dot(e1), gr.dot(e2), gs.dot(e2);
       Eigen::Matrix<double, 2, 9> G;  // rows: d/dr, d/ds
@@ -89,6 +89,29 @@ Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, She
     }
   }
   return k;
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Vec3>& membrane) {
+  return stress_stiffness(g, rule, membrane.size(), [&](std::size_t ip, const Vec3&, const Vec3&) {
+    const Vec3& m = membrane[ip];
+    Eigen::Matrix2d N;
+    N << m(0), m(2), m(2), m(1);
+    return N;
+  });
+}
+
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Mat3>& membrane) {
+  return stress_stiffness(g, rule, membrane.size(),
+                          [&](std::size_t ip, const Vec3& e1, const Vec3& e2) {
+                            const Mat3& m = membrane[ip];
+                            Eigen::Matrix2d N;
+                            N << e1.dot(m * e1), e1.dot(m * e2), e2.dot(m * e1), e2.dot(m * e2);
+                            return Eigen::Matrix2d(0.5 * (N + N.transpose()));
+                          });
 }
 
 double shell9_area(const Shell9Geometry& g) {

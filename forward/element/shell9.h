@@ -182,5 +182,12 @@ double shell9_area(const Shell9Geometry& g);
 // Dropping the compressive part keeps k positive semi-definite (see axisym2_stress_stiffness).
 Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
                                                     const std::vector<Vec3>& membrane);
+// The same with the membrane force tensors in global axes (3x3, N/mm, one per point), projected
+// onto the point's tangent plane, N_ab = e_a . N e_b: independent of the element's parametrisation
+// and of the configuration the tensors come from (the local components of another configuration
+// are relative to its frame e1 = g_r / |g_r|, which turns with the r-line of the element, not with
+// the s-line: mirror-image elements would see different tensors).
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Mat3>& membrane);
 
 }  // namespace vs::shell3d
