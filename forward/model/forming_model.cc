@@ -720,7 +720,7 @@ double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) 
 
 void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd& x,
                                std::vector<std::vector<double>>* rates,
-                               std::vector<std::vector<Vec3>>* membrane) const {
+                               std::vector<std::vector<Mat3>>* membrane) const {
   const int ne = num_elements();
   rates->assign(ne, {});
   if (membrane) membrane->assign(ne, {});
@@ -740,9 +740,15 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
                     &out);
     (*rates)[e] = std::move(out.point_rate);
     if (membrane) {
-      std::vector<Vec3>& m = (*membrane)[static_cast<std::size_t>(e)];
+      std::vector<Mat3>& m = (*membrane)[static_cast<std::size_t>(e)];
       m.resize(out.resultant.size());
-      for (std::size_t p = 0; p < m.size(); ++p) m[p] = out.resultant[p].N;
+      for (std::size_t p = 0; p < m.size(); ++p) {
+        const Shell9Resultant& r = out.resultant[p];
+        Eigen::Matrix2d N;
+        N << r.N(0), r.N(2), r.N(2), r.N(1);
+        const Eigen::Matrix<double, 3, 2> F = r.frame.leftCols<2>();
+        m[p] = F * N * F.transpose();
+      }
     }
   }
 }

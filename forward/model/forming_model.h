@@ -72,10 +72,13 @@ struct FormingState {
 
 // The implicit geometry update's coupling (stepping/step_driver.h; as vs::GeometryCoupling of
 // the axisymmetric model): K_g (scale) (v - v_ref) with K_g the membrane initial-stress
-// stiffness (shell9_stress_stiffness) of the previous iterate's membrane forces.
+// stiffness (shell9_stress_stiffness) of the previous iterate's membrane forces. They are tensors
+// in global axes, projected onto the tangent planes of the configuration being solved: local
+// components of the previous configuration would be read in frames that turn with the elements'
+// r-lines, which breaks the mirror symmetry of a symmetric blank (issue 14).
 struct GeometryCoupling3 {
   double scale_s = 0.0;                     // d x / d v = theta dt [s]
-  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
+  std::vector<std::vector<Mat3>> membrane;  // per element and in-plane point, global [N/mm]
   std::vector<Vec3> v_ref;                  // per node, global [mm/s]
 };
 
@@ -213,10 +216,10 @@ class FormingModel {
   const SparseMatrix& matrix() const { return assembler_->matrix(); }
 
   // Effective rate at every flow point (per element) at local velocities x, and (if asked) the
-  // membrane forces (N11, N22, N12) at every in-plane point.
+  // membrane force tensor in global axes (3x3, N/mm) at every in-plane point.
   void point_rates(const FormingState& s, const Eigen::VectorXd& x,
                    std::vector<std::vector<double>>* rates,
-                   std::vector<std::vector<Vec3>>* membrane = nullptr) const;
+                   std::vector<std::vector<Mat3>>* membrane = nullptr) const;
 
   // The implicit geometry update's coupling term from the next prepare() on, or null (none).
   // The pointee must outlive the solves it is set for.

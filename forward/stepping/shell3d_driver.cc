@@ -37,7 +37,7 @@ struct Solved {
   double punch_force = 0.0;
   double max_rate = 0.0;
   std::vector<std::vector<double>> point_rates;
-  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
+  std::vector<std::vector<Mat3>> membrane;  // per element and in-plane point, global [N/mm]
   NewtonSummary summary;
 };
 
