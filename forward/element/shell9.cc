@@ -51,24 +51,18 @@ const Gauss& gauss(int n) {
   return n == 2 ? g2 : g3;
 }
 
-}  // namespace
-
-Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
-                                                    const std::vector<Vec3>& membrane) {
+// shell9_stress_stiffness with the membrane tensor of in-plane point ip in the point's local frame
+// (e1, e2) from local(ip, e1, e2).
+template <class Local>
+Eigen::Matrix<double, 9, 9> stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                             std::size_t points, const Local& local) {
   Eigen::Matrix<double, 9, 9> k = Eigen::Matrix<double, 9, 9>::Zero();
   const Gauss& q = gauss(rule == Shell9Rule::kReduced ? 2 : 3);
-  assert(static_cast<int>(membrane.size()) == q.n * q.n);
+  assert(static_cast<int>(points) == q.n * q.n);
+  static_cast<void>(points);
   int ip = 0;
   for (int j = 0; j < q.n; ++j) {
     for (int i = 0; i < q.n; ++i, ++ip) {
-      const Vec3& m = membrane[static_cast<std::size_t>(ip)];
-      Eigen::Matrix2d N;
-      N << m(0), m(2), m(2), m(1);
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(N);
-      const Eigen::Vector2d lam = eig.eigenvalues().cwiseMax(0.0);
-      if (lam.maxCoeff() <= 0.0) continue;
-      const Eigen::Matrix2d Np =
-          eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose();
       const Shape9 sh = lagrange9(q.x[i], q.x[j]);
       Vec3 gr = Vec3::Zero(), gs = Vec3::Zero();
       for (int a = 0; a < 9; ++a) {
@@ -79,6 +73,12 @@ Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, She
       const double area = n.norm();
       const Vec3 e1 = gr.normalized();
       const Vec3 e2 = (n / area).cross(e1);
+      const Eigen::Matrix2d N = local(static_cast<std::size_t>(ip), e1, e2);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(N);
+      const Eigen::Vector2d lam = eig.eigenvalues().cwiseMax(0.0);
+      if (lam.maxCoeff() <= 0.0) continue;
+      const Eigen::Matrix2d Np =
+          eig.eigenvectors() * lam.asDiagonal() * eig.eigenvectors().transpose();
       Eigen::Matrix2d J;  // d(x1, x2)/d(r, s)
       J << gr.dot(e1), gs.dot(e1), gr.dot(e2), gs.dot(e2);
       Eigen::Matrix<double, 2, 9> G;  // rows: d/dr, d/ds
@@ -89,6 +89,29 @@ Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, She
     }
   }
   return k;
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Vec3>& membrane) {
+  return stress_stiffness(g, rule, membrane.size(), [&](std::size_t ip, const Vec3&, const Vec3&) {
+    const Vec3& m = membrane[ip];
+    Eigen::Matrix2d N;
+    N << m(0), m(2), m(2), m(1);
+    return N;
+  });
+}
+
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Mat3>& membrane) {
+  return stress_stiffness(g, rule, membrane.size(),
+                          [&](std::size_t ip, const Vec3& e1, const Vec3& e2) {
+                            const Mat3& m = membrane[ip];
+                            Eigen::Matrix2d N;
+                            N << e1.dot(m * e1), e1.dot(m * e2), e2.dot(m * e1), e2.dot(m * e2);
+                            return Eigen::Matrix2d(0.5 * (N + N.transpose()));
+                          });
 }
 
 double shell9_area(const Shell9Geometry& g) {
@@ -282,6 +305,16 @@ void mitc9_assumed_poly(const Mitc9Tying& ty, double r, double s, int n, CovPoly
     B.row(3).noalias() = wr.transpose() * ty.rt[p];
     B.row(4).noalias() = ws.transpose() * ty.st[p];
   }
+}
+
+// Components (s11, s22, s12) of P S P^T for the plane tensor S = [[v0, v2], [v2, v1]] and the 2x2
+// matrix P (row by row).
+Vec3 projected(const Vec3& v, const std::array<double, 4>& P) {
+  Eigen::Matrix2d p, s;
+  p << P[0], P[1], P[2], P[3];
+  s << v(0), v(2), v(2), v(1);
+  const Eigen::Matrix2d m = p * s * p.transpose();
+  return Vec3(m(0, 0), m(1, 1), 0.5 * (m(0, 1) + m(1, 0)));
 }
 
 // Point basis at thickness coordinate t of a surface point (as point_basis()).
@@ -495,6 +528,8 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
         covariant_poly(g, sh, sp, n, &ws.assumed);
       }
       const CovPoly& A = ws.assumed;
+      const Mat3 mid = basis_at(sp, 0.0).frame;  // of the resultants
+      ops->frame[static_cast<std::size_t>(ip)] = mid;
       for (int k = 0; k < nt; ++k) {
         const double t = 2.0 * thick.zeta[static_cast<std::size_t>(k)];
         const double wt = 2.0 * thick.weight[static_cast<std::size_t>(k)];
@@ -514,8 +549,14 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
           ops->flow.back().rd_cos = c / len;
           ops->flow.back().rd_sin = sn / len;
         }
+        if (t != 0.0) {
+          Shell9Operators::FlowRow& f = ops->flow.back();
+          f.turned = true;
+          for (int u = 0; u < 2; ++u)
+            for (int w = 0; w < 2; ++w)
+              f.to_mid[static_cast<std::size_t>(2 * u + w)] = mid.col(u).dot(b.frame.col(w));
+        }
         rows += 3;
-        if (k == nt / 2) ops->frame[static_cast<std::size_t>(ip)] = b.frame;  // middle point
         if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
       }
     }
@@ -587,8 +628,9 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
     if (want_k) ws.DL.middleRows(fr.row, 3).noalias() = (fr.dV * p.D) * ops.L.middleRows(fr.row, 3);
     out->potential += p.potential * fr.dV;
     Shell9Resultant& res = out->resultant[static_cast<std::size_t>(fr.point)];
-    res.N += fr.dz * p.stress;
-    res.M += fr.arm * p.stress;
+    const Vec3 sm = fr.turned ? projected(p.stress, fr.to_mid) : p.stress;
+    res.N += fr.dz * sm;
+    res.M += fr.arm * sm;
   }
   for (int ip = 0; ip < ops.inplane_points; ++ip) {
     out->resultant[static_cast<std::size_t>(ip)].frame = ops.frame[static_cast<std::size_t>(ip)];

@@ -95,6 +95,9 @@ struct Shell9State {
 enum class Shell9Stiffness { kSecant, kTangent, kNone };
 
 struct Shell9Resultant {
+  // Sums over the thickness of the point stresses, each projected from its own frame (e1 along
+  // g_r(t), which turns with t on a curved, twisted element) onto `frame`: tensors, independent
+  // of the element's parametrisation.
   Vec3 N = Vec3::Zero();          // membrane forces (N11, N22, N12) [N/mm], local frame
   Vec3 M = Vec3::Zero();          // moments int s z dz [N], z along e3
   Mat3 frame = Mat3::Identity();  // local frame (columns e1, e2, e3) at the mid-surface
@@ -128,6 +131,11 @@ struct Shell9Operators {
     // Planar anisotropy: RD at the angle a from the point's e1, (cos a, sin a) (RD along e1
     // without material axes).
     double rd_cos = 1.0, rd_sin = 0.0;
+    // Resultants: the point's in-plane axes (e1, e2) in the mid-surface frame (E1, E2) of its
+    // in-plane point, P = [[E1.e1, E1.e2], [E2.e1, E2.e2]] row by row: the stress S of the point
+    // enters the sums as P S P^T (the projection of the tensor onto the mid-surface frame).
+    bool turned = false;  // P != I
+    std::array<double, 4> to_mid{1.0, 0.0, 0.0, 1.0};
   };
   struct ShearRow {
     int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
@@ -142,7 +150,7 @@ struct Shell9Operators {
   Eigen::MatrixXd L;
   std::vector<FlowRow> flow;
   std::vector<ShearRow> shear;
-  std::vector<Mat3> frame;  // local frame at the middle thickness point of each in-plane point
+  std::vector<Mat3> frame;  // local frame on the mid-surface (t = 0) at each in-plane point
   std::vector<std::array<double, 9>> shape;  // shape functions N_a at each in-plane point
   std::vector<DrillNode> drill;
 };
@@ -178,5 +186,12 @@ double shell9_area(const Shell9Geometry& g);
 // Dropping the compressive part keeps k positive semi-definite (see axisym2_stress_stiffness).
 Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
                                                     const std::vector<Vec3>& membrane);
+// The same with the membrane force tensors in global axes (3x3, N/mm, one per point), projected
+// onto the point's tangent plane, N_ab = e_a . N e_b: independent of the element's parametrisation
+// and of the configuration the tensors come from (the local components of another configuration
+// are relative to its frame e1 = g_r / |g_r|, which turns with the r-line of the element, not with
+// the s-line: mirror-image elements would see different tensors).
+Eigen::Matrix<double, 9, 9> shell9_stress_stiffness(const Shell9Geometry& g, Shell9Rule rule,
+                                                    const std::vector<Mat3>& membrane);
 
 }  // namespace vs::shell3d

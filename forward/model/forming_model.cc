@@ -103,13 +103,9 @@ void FormingModel::read_holder(const Scene& scene) {
   for (const ToolSpec& t : scene.tools) {
     if (t.kind != ToolKind::kBlankHolder) continue;
     // The scene checks reject these too; the model repeats them for scenes built in code.
-    if (t.gap_mm > 0.0) {
+    if ((t.force_N > 0.0) == (t.gap_mm > 0.0)) {
       throw InputError(scene.source + ": tool." + t.name +
-                       ".gap_mm: geometry = \"shell3d\" has no fixed-gap blank holder yet "
-                       "(use force_N)");
-    }
-    if (!(t.force_N > 0.0)) {
-      throw InputError(scene.source + ": tool." + t.name + ".force_N must be > 0");
+                       ": a blank holder needs exactly one of force_N > 0 and gap_mm > 0");
     }
     if (std::isinf(t.friction)) {
       throw InputError(scene.source + ": tool." + t.name +
@@ -117,11 +113,45 @@ void FormingModel::read_holder(const Scene& scene) {
     }
     if (die_ < 0) throw InputError(scene.source + ": a blank holder needs a die");
     holder_force_ = t.force_N;
+    holder_gap_ = t.gap_mm;
     holder_friction_ = t.friction;
+  }
+  if (holder_gap_ > 0.0) {
+    for (std::size_t i = 0; i < tools_.size(); ++i) {
+      if (tools_[i].kind() == ToolKind::kBlankHolder) holder_ = static_cast<int>(i);
+    }
+  }
+}
+
+bool FormingModel::past_holder_edge(const FormingState& s, int node) const {
+  const NodeContact3& c = s.contact[static_cast<std::size_t>(node)];
+  if (holder_ < 0 || c.tool != holder_) return false;
+  const Vec3& x = s.x[static_cast<std::size_t>(node)];
+  return std::hypot(x.x(), x.y()) <
+         tools_[static_cast<std::size_t>(holder_)].profile().front().p0.x();
+}
+
+void FormingModel::update_gap_holder_forces(const Eigen::VectorXd& x, FormingState* s) const {
+  const std::vector<double> f =
+      gap_.nodal_forces(num_nodes(), [&](int e) { return assembler_->gather(e, x); });
+  for (int i = 0; i < num_nodes(); ++i) {
+    NodeContact3& c = s->contact[static_cast<std::size_t>(i)];
+    c.holder_force_N = in_gap(c) ? f[static_cast<std::size_t>(i)] : 0.0;
   }
 }
 
 void FormingModel::update_holder(FormingState* s) const {
+  if (fixed_gap_holder()) {
+    // A node in the gap whose thickness fills it (within 0.1 %) touches both faces
+    // (AxisymModel::update_sandwiched).
+    for (int i = 0; i < num_nodes(); ++i) {
+      NodeContact3& c = s->contact[static_cast<std::size_t>(i)];
+      if (!in_gap(c)) c.holder_force_N = 0.0;
+      c.sandwiched =
+          in_gap(c) && s->thickness[static_cast<std::size_t>(i)] >= (1.0 - 1e-3) * holder_gap_;
+    }
+    return;
+  }
   for (NodeContact3& c : s->contact) c.holder_force_N = 0.0;
   if (!has_holder()) return;
   const std::vector<double> area = lumped_areas(s->x);
@@ -207,6 +237,7 @@ void FormingModel::freeze_material(const std::vector<double>& eps_bar, double dt
   // Backward Euler is the stable one (the midpoint weight leaves the stiff hardening mode
   // undamped) but is further from the axisymmetric twin with sticking, so the default stays 1/2
   // until the geometry update of issue 14 changes the step error (experiments/05_shell3d).
+  step_dt_ = dt_predicted;
   const int ne = num_elements(), fp = flow_points_, nt = thickness_points();
   sigma_y_.resize(static_cast<std::size_t>(ne * fp));
   hardening_viscosity_.resize(sigma_y_.size());
@@ -304,6 +335,20 @@ void FormingModel::prepare(const FormingState& s) {
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
     shell9_operators(geometry(s, e), rule_, thick_, &operators_[static_cast<std::size_t>(e)]);
+  }
+  if (fixed_gap_holder()) {
+    std::vector<char> gap(static_cast<std::size_t>(nn), 0);
+    for (int i = 0; i < nn; ++i) gap[static_cast<std::size_t>(i)] = in_gap(s.contact[i]) ? 1 : 0;
+    GapHolderInput in;
+    in.mesh = &mesh_;
+    in.x = &s.x;
+    in.thickness = &s.thickness;
+    in.in_gap = &gap;
+    in.frame = &frame_;
+    in.viscosity = &shear_viscosity_;
+    in.gap_mm = holder_gap_;
+    in.dt_s = step_dt_;
+    gap_.prepare(in);
   }
   coupling_k_.clear();
   if (coupling_) {
@@ -498,6 +543,16 @@ double FormingModel::friction_limit(const NodeContact3& c) const {
   // under its share of the holder force (as AxisymModel::friction_terms).
   double limit = tools_[c.tool].friction() * std::max(c.normal_force_N, 0.0);
   if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
+  // Fixed-gap holder: a node on the holder's face has the die face's friction on the other side;
+  // a sandwiched node's pull on the face it touches is the other face pushing, with that face's
+  // friction (AxisymModel::friction_terms).
+  const bool on_holder = holder_ >= 0 && c.tool == holder_;
+  if (on_holder) limit += tools_[static_cast<std::size_t>(die_)].friction() * c.holder_force_N;
+  if (c.sandwiched) {
+    const double other =
+        on_holder ? tools_[static_cast<std::size_t>(die_)].friction() : holder_friction_;
+    limit += other * std::max(-c.normal_force_N, 0.0);
+  }
   return limit;
 }
 
@@ -565,13 +620,15 @@ void FormingModel::holder_loads(const FormingState& s, const Eigen::VectorXd& x,
                                 FormingSystem* out) const {
   // The holder pushes each flange node up (+z) onto the die face: an external load in the nodal
   // frame, with its work in the potential. On the flat face it lies along the prescribed normal
-  // dof, so it only adds to the die's normal reaction (and so to the die's friction).
+  // dof, so it only adds to the die's normal reaction (and so to the die's friction). A fixed-gap
+  // holder's force on a node touching the holder's face is the die face's push, down (-z).
   out->external_force.setZero(num_dofs());
   for (int i = 0; i < num_nodes(); ++i) {
     const double f = s.contact[i].holder_force_N;
     if (f == 0.0) continue;
     const int d = model_->dof(i, 0);
-    const Vec3 local = frame_[i].transpose() * (f * Vec3::UnitZ());
+    const double sign = holder_ >= 0 && s.contact[i].tool == holder_ ? -1.0 : 1.0;
+    const Vec3 local = frame_[i].transpose() * (sign * f * Vec3::UnitZ());
     out->external_force.segment<3>(d) = local;
     out->potential -= local.dot(x.segment<3>(d));
   }
@@ -634,6 +691,7 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
   const bool want = kind != Shell9Stiffness::kNone;
   const ElementKernel kernel = [&](int e, const Eigen::VectorXd& qe, ElementContribution* c) {
     element_kernel(s, e, qe, kind, theta, c);
+    if (fixed_gap_holder()) gap_.add(e, qe, want, c);
   };
   const bool dual = kind == Shell9Stiffness::kTangent;
   if (dual) dual_prepare(x);
@@ -662,7 +720,7 @@ double FormingModel::potential(const FormingState& s, const Eigen::VectorXd& x) 
 
 void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd& x,
                                std::vector<std::vector<double>>* rates,
-                               std::vector<std::vector<Vec3>>* membrane) const {
+                               std::vector<std::vector<Mat3>>* membrane) const {
   const int ne = num_elements();
   rates->assign(ne, {});
   if (membrane) membrane->assign(ne, {});
@@ -682,9 +740,15 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
                     &out);
     (*rates)[e] = std::move(out.point_rate);
     if (membrane) {
-      std::vector<Vec3>& m = (*membrane)[static_cast<std::size_t>(e)];
+      std::vector<Mat3>& m = (*membrane)[static_cast<std::size_t>(e)];
       m.resize(out.resultant.size());
-      for (std::size_t p = 0; p < m.size(); ++p) m[p] = out.resultant[p].N;
+      for (std::size_t p = 0; p < m.size(); ++p) {
+        const Shell9Resultant& r = out.resultant[p];
+        Eigen::Matrix2d N;
+        N << r.N(0), r.N(2), r.N(2), r.N(1);
+        const Eigen::Matrix<double, 3, 2> F = r.frame.leftCols<2>();
+        m[p] = F * N * F.transpose();
+      }
     }
   }
 }

@@ -19,7 +19,9 @@
 //     iteration (FormingStepProblem).
 // A force blank holder (update_holder) is a load +z on the flange nodes touching the die's flat
 // face, shared by lumped nodal area; it adds to the die's normal reaction and brings its own
-// Coulomb friction (friction_limit), as in the axisymmetric model.
+// Coulomb friction (friction_limit), as in the axisymmetric model. A fixed-gap holder (gap_mm) is
+// a flat face below the die face that holds the flange thickness at the gap: derived in
+// gap_holder3.h.
 // The thickness is nodal, from exact conservation of each node's lumped volume h0 A0_i = h A_i
 // with A_i = integral of N_i over the current mid-surface (the 3D analogue of the axisymmetric
 // element volume / area).
@@ -35,6 +37,7 @@
 #include "material/hardening.h"
 #include "material/hill_plane_stress.h"
 #include "material/viscous_law.h"
+#include "model/gap_holder3.h"
 #include "model/shell_assembler.h"
 #include "model/shell_model.h"
 #include "scene/scene.h"
@@ -46,7 +49,12 @@ struct NodeContact3 {
   Vec3 normal = Vec3::UnitZ();  // from the tool into the sheet
   double normal_force_N = 0.0;  // lagged normal reaction of this node (meshed part)
   bool on_die_face = false;     // touching the flat face of the die (the flange)
-  double holder_force_N = 0.0;  // force holder: this node's share pressing it up (meshed part)
+  // Force holder: this node's share pressing it up (meshed part). Fixed-gap holder: the holder
+  // pressure's nodal force of the last converged state, exerted by the face the node does not
+  // touch.
+  double holder_force_N = 0.0;
+  // Fixed-gap holder: in the gap with its thickness filling it (update_holder; gap_holder3.h).
+  bool sandwiched = false;
 };
 
 // Everything that changes from step to step.
@@ -64,10 +72,13 @@ struct FormingState {
 
 // The implicit geometry update's coupling (stepping/step_driver.h; as vs::GeometryCoupling of
 // the axisymmetric model): K_g (scale) (v - v_ref) with K_g the membrane initial-stress
-// stiffness (shell9_stress_stiffness) of the previous iterate's membrane forces.
+// stiffness (shell9_stress_stiffness) of the previous iterate's membrane forces. They are tensors
+// in global axes, projected onto the tangent planes of the configuration being solved: local
+// components of the previous configuration would be read in frames that turn with the elements'
+// r-lines, which breaks the mirror symmetry of a symmetric blank (issue 14).
 struct GeometryCoupling3 {
   double scale_s = 0.0;                     // d x / d v = theta dt [s]
-  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
+  std::vector<std::vector<Mat3>> membrane;  // per element and in-plane point, global [N/mm]
   std::vector<Vec3> v_ref;                  // per node, global [mm/s]
 };
 
@@ -115,10 +126,26 @@ class FormingModel {
   // Force blank holder (tool kind blank_holder with force_N): whole-blank force and friction.
   bool has_holder() const { return holder_force_ > 0.0; }
   int die_index() const { return die_; }
+  // Fixed-gap blank holder (gap_mm; gap_holder3.h): its gap and tool index (-1: none).
+  bool fixed_gap_holder() const { return holder_gap_ > 0.0; }
+  double holder_gap_mm() const { return holder_gap_; }
+  int holder_index() const { return holder_; }
+  // A flange node between the die face and a fixed-gap holder (touching either).
+  bool in_gap(const NodeContact3& c) const {
+    return fixed_gap_holder() && (c.on_die_face || (c.tool >= 0 && c.tool == holder_));
+  }
+  // A node on the fixed-gap holder's face drawn past its inner edge (it leaves the face: the
+  // closest point would be the edge itself, and re-attaching there would pin the node).
+  bool past_holder_edge(const FormingState& s, int node) const;
+  // Fixed-gap holder: the nodal holder forces of local velocities x (after prepare(s)) into the
+  // nodes in the gap of s (NodeContact3::holder_force_N), for the next solve.
+  void update_gap_holder_forces(const Eigen::VectorXd& x, FormingState* s) const;
   // Spreads the holder force over the flange nodes on the die face (on_die_face), each node's
   // share proportional to its lumped area integral N_i dA in state s (as
   // AxisymModel::update_holder with its nodal ring areas): the consistent nodal loads of a
   // uniform holder pressure on those nodes' areas. Zeroes the shares of every other node.
+  // Fixed-gap holder: keeps the nodal forces of the nodes in the gap (update_gap_holder_forces),
+  // zeroes the others, and marks the sandwiched nodes.
   void update_holder(FormingState* s) const;
   // Nodes whose boundary condition (blank.edge) forbids contact (pinned / clamped edge).
   bool contact_eligible(int node) const { return eligible_[node] != 0; }
@@ -189,10 +216,10 @@ class FormingModel {
   const SparseMatrix& matrix() const { return assembler_->matrix(); }
 
   // Effective rate at every flow point (per element) at local velocities x, and (if asked) the
-  // membrane forces (N11, N22, N12) at every in-plane point.
+  // membrane force tensor in global axes (3x3, N/mm) at every in-plane point.
   void point_rates(const FormingState& s, const Eigen::VectorXd& x,
                    std::vector<std::vector<double>>* rates,
-                   std::vector<std::vector<Vec3>>* membrane = nullptr) const;
+                   std::vector<std::vector<Mat3>>* membrane = nullptr) const;
 
   // The implicit geometry update's coupling term from the next prepare() on, or null (none).
   // The pointee must outlive the solves it is set for.
@@ -261,6 +288,10 @@ class FormingModel {
   std::vector<RigidTool> tools_;
   int punch_ = -1, die_ = -1;
   double holder_force_ = 0.0, holder_friction_ = 0.0;  // whole blank [N], Coulomb coefficient
+  int holder_ = -1;          // fixed-gap holder's tool (a face gap_mm below the die face)
+  double holder_gap_ = 0.0;  // [mm]; 0: no fixed-gap holder
+  double step_dt_ = 0.0;     // step the frozen material data are for [s] (freeze_material)
+  GapHolder3 gap_;           // the fixed-gap holder's constraints of the prepared state
   double nominal_rate_ = 1.0;
   double friction_velocity_ = 1e-4;
   double hardening_theta_ = 0.5;

@@ -51,8 +51,9 @@ class FormingStepProblem : public NewtonProblem {
   // |reaction vector| of every contact node (0 elsewhere) at the last finish().
   const std::vector<double>& reaction_magnitudes() const { return magnitude_; }
   const std::vector<std::vector<double>>& point_rates() const { return rates_; }
-  // Membrane forces (N11, N22, N12) per element and in-plane point at the last finish() [N/mm].
-  const std::vector<std::vector<Vec3>>& membrane_forces() const { return membrane_; }
+  // Membrane force tensors in global axes per element and in-plane point at the last finish()
+  // [N/mm].
+  const std::vector<std::vector<Mat3>>& membrane_forces() const { return membrane_; }
   double max_point_rate() const { return max_rate_; }
 
  private:
@@ -66,7 +67,7 @@ class FormingStepProblem : public NewtonProblem {
   double punch_force_ = 0.0, max_rate_ = 0.0;
   std::vector<double> normal_, magnitude_;
   std::vector<std::vector<double>> rates_;
-  std::vector<std::vector<Vec3>> membrane_;
+  std::vector<std::vector<Mat3>> membrane_;
   std::vector<double> relax_, last_change_;
 };
 

@@ -46,9 +46,8 @@ std::string summary_text(const CupProfileSummary& s) {
 
 }  // namespace
 
-double profile_rolling_direction_deg(const Scene&) {
-  // RD along x: the lead connects material.anisotropy.rolling_direction_deg here at merge.
-  return 0.0;
+double profile_rolling_direction_deg(const Scene& scene) {
+  return scene.material.anisotropy.rolling_direction_deg;
 }
 
 CupProfileReport cup_profile_report(const Scene& scene, const RunResult& result) {

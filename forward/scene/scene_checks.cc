@@ -105,14 +105,6 @@ void check_tools(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
 
 void check_blank(const Scene& scene, const ToolRoles& roles, const SceneSourceMap& where) {
   const BlankSpec& blank = scene.blank;
-  if (scene.geometry == Geometry::kShell3d && roles.holder != nullptr &&
-      roles.holder->gap_mm > 0.0) {
-    where.fail(tool_address(*roles.holder, "gap_mm"),
-               fmt::format("{} = {}: geometry = \"shell3d\" has no fixed-gap blank holder yet "
-                           "(use {}, or the axisymmetric geometry)",
-                           tool_address(*roles.holder, "gap_mm"), roles.holder->gap_mm,
-                           tool_address(*roles.holder, "force_N")));
-  }
   if (blank.edge == EdgeCondition::kFree && roles.die == nullptr) {
     where.fail("blank.edge",
                "blank.edge = \"free\" needs a die: without one nothing holds the sheet");
@@ -261,7 +253,7 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "estimated as `radius_mm` / (2 `divisions`) for circles and `radius_mm` / `divisions` for "
       "squares.",
       "Keys marked 'axisymmetric only' / 'shell3d only' are rejected in scenes of the other "
-      "`geometry`; `geometry = \"shell3d\"` has no fixed-gap blank holder (`gap_mm`) yet.",
+      "`geometry`.",
   };
   return rules;
 }

@@ -179,6 +179,7 @@ void AxisymStepper::attach(AxisymState& s, int node, int tool, const ContactHold
   nc.tool = tool;
   nc.slip_edge = slip;
   if (before.tool == tool) {  // the squeeze state is kept while the node stays on its tool
+    nc.holder_force_N = before.holder_force_N;
     nc.squeeze_tool = before.squeeze_tool;
     nc.clearance_mm = before.clearance_mm;
     nc.squeeze_force_N = before.squeeze_force_N;

@@ -37,7 +37,7 @@ struct Solved {
   double punch_force = 0.0;
   double max_rate = 0.0;
   std::vector<std::vector<double>> point_rates;
-  std::vector<std::vector<Vec3>> membrane;  // per element and in-plane point [N/mm]
+  std::vector<std::vector<Mat3>> membrane;  // per element and in-plane point, global [N/mm]
   NewtonSummary summary;
 };
 
@@ -175,7 +175,9 @@ void Shell3dStepper::attach(FormingState& s, int node, int tool) const {
   const auto p = model_.project(tool, s.x[node], s.thickness[node], model_.on_axis(node));
   NodeContact3& c = s.contact[node];
   const double keep = c.tool == tool ? c.normal_force_N : 0.0;
+  const double keep_holder = c.tool == tool ? c.holder_force_N : 0.0;
   c = NodeContact3{};
+  c.holder_force_N = keep_holder;
   c.tool = tool;
   c.normal = p.normal;
   c.normal_force_N = keep;
@@ -190,6 +192,10 @@ void Shell3dStepper::maintain_contacts(FormingState& s, const ContactHolds& hold
   for (int i = 0; i < nn; ++i) {
     if (!model_.contact_eligible(i)) continue;
     if (s.contact[i].tool >= 0) {
+      if (model_.past_holder_edge(s, i)) {
+        s.contact[i] = NodeContact3{};
+        continue;
+      }
       attach(s, i, s.contact[i].tool);  // back onto the surface, normal refreshed
       continue;
     }
@@ -289,7 +295,8 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
       best_per_tool[tool] = std::max(best_per_tool[tool], smoothed[i]);
       const double threshold = driver_.release_fraction * scale +
                                (model_.tools()[tool].sticking() ? kStickingPullOff * full : 0.0);
-      if (other > 0 && smoothed[i] < -threshold) {
+      // A node sandwiched in a fixed gap touches both faces whatever its reaction on one.
+      if (other > 0 && smoothed[i] < -threshold && !s.contact[i].sandwiched) {
         candidates.push_back(i);
       } else {
         ++kept_per_tool[tool];
@@ -315,6 +322,9 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
           out->summary.picard_steps, release.size());
     }
     if (release.empty()) {
+      // Fixed-gap holder: the pressure of this converged state sets the holder forces (and so the
+      // friction on both flange faces) of the next solve (lagged, as the axisymmetric driver).
+      if (model_.fixed_gap_holder()) model_.update_gap_holder_forces(x, &s);
       out->punch_force = problem.punch_force();
       out->max_rate = problem.max_point_rate();
       out->point_rates = problem.point_rates();

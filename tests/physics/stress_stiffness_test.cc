@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "element/axisym2.h"
 #include "element/lagrange9.h"
@@ -112,6 +114,74 @@ TEST(StressStiffness, Shell9DropsTheCompressivePrincipalPart) {
   const auto km = shell3d::shell9_stress_stiffness(g, shell3d::Shell9Rule::kMitc9, M);
   using Eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 9, 9>>;
   EXPECT_GT(Eig(km).eigenvalues().minCoeff(), -1e-12 * km.norm());
+}
+
+// The membrane tensors in global axes (the implicit update's coupling, GeometryCoupling3): on a
+// flat element the same as the local components, and on a curved element independent of the node
+// numbering (mirror-image elements see the same tensor; issue 14).
+TEST(StressStiffness, Shell9GlobalTensorsEqualTheLocalComponentsOnAFlatElement) {
+  const shell3d::Shell9Geometry g = flat_square(2.0);  // e1 = x, e2 = y
+  std::vector<shell3d::Vec3> local;
+  std::vector<shell3d::Mat3> global;
+  for (int p = 0; p < 9; ++p) {
+    const double N11 = 3.0 + p, N22 = -1.0 + 0.5 * p, N12 = 0.3 * p - 1.0;
+    local.emplace_back(N11, N22, N12);
+    shell3d::Mat3 m = shell3d::Mat3::Zero();
+    m.topLeftCorner<2, 2>() << N11, N12, N12, N22;
+    global.push_back(m);
+  }
+  const auto kl = shell3d::shell9_stress_stiffness(g, shell3d::Shell9Rule::kMitc9, local);
+  const auto kg = shell3d::shell9_stress_stiffness(g, shell3d::Shell9Rule::kMitc9, global);
+  EXPECT_GT(kl.norm(), 1.0);
+  EXPECT_LT((kl - kg).norm(), 1e-13 * kl.norm());
+}
+
+TEST(StressStiffness, Shell9GlobalTensorsAreIndependentOfTheNodeNumbering) {
+  // A skewed element on z = 0.5 x y, numbered in lagrange9 order and with r and s exchanged.
+  auto element = [](bool transposed) {
+    shell3d::Shell9Geometry g;
+    for (int n = 0; n < 9; ++n) {
+      auto rs = shell3d::lagrange9_node(n);
+      if (transposed) std::swap(rs[0], rs[1]);
+      const double x = 1.0 + 0.5 * (1.0 + rs[0]) + 0.15 * rs[1];
+      const double y = 0.5 + 0.4 * (1.0 + rs[1]) + 0.1 * rs[0] * rs[0];
+      g.x[n] = shell3d::Vec3(x, y, 0.5 * x * y);
+      g.n_rot[n] = 2;
+    }
+    return g;
+  };
+  // A tensor field of the position (a global one, tangent or not; the element projects it).
+  auto tensor = [](const shell3d::Vec3& x) {
+    shell3d::Mat3 m;
+    m << 4.0 + x.x(), 1.0 - x.y(), 0.3, 1.0 - x.y(), 2.0 + x.x() * x.y(), -0.2, 0.3, -0.2, 0.5;
+    return m;
+  };
+  const double g3 = std::sqrt(0.6);
+  const double xs[3] = {-g3, 0.0, g3};
+  std::array<std::vector<shell3d::Mat3>, 2> field;
+  std::array<shell3d::Shell9Geometry, 2> geo = {element(false), element(true)};
+  for (int t = 0; t < 2; ++t)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const shell3d::Shape9 sh = shell3d::lagrange9(xs[i], xs[j]);
+        shell3d::Vec3 x = shell3d::Vec3::Zero();
+        for (int n = 0; n < 9; ++n) x += sh.N(n) * geo[static_cast<std::size_t>(t)].x[n];
+        field[static_cast<std::size_t>(t)].push_back(tensor(x));
+      }
+  const auto ka = shell3d::shell9_stress_stiffness(geo[0], shell3d::Shell9Rule::kMitc9, field[0]);
+  const auto kb = shell3d::shell9_stress_stiffness(geo[1], shell3d::Shell9Rule::kMitc9, field[1]);
+  auto transposed_node = [](int n) {
+    const auto rs = shell3d::lagrange9_node(n);
+    int m = 0;
+    while (shell3d::lagrange9_node(m)[0] != rs[1] || shell3d::lagrange9_node(m)[1] != rs[0]) ++m;
+    return m;
+  };
+  double diff = 0.0;
+  for (int a = 0; a < 9; ++a)
+    for (int b = 0; b < 9; ++b)
+      diff = std::max(diff, std::abs(ka(a, b) - kb(transposed_node(a), transposed_node(b))));
+  EXPECT_GT(ka.norm(), 1.0);
+  EXPECT_LT(diff, 1e-12 * ka.norm());
 }
 
 }  // namespace

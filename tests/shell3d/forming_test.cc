@@ -139,32 +139,45 @@ TEST(Forming3d, GoalNumericsMatchAxisymmetricSolver) {
 // itself under x <-> y, the model does not know it, so symmetry is a check of the assembly,
 // frames, contact and constraints.
 TEST(Forming3d, SquareBlankIsSymmetricAboutTheDiagonal) {
-  Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4b_square_clamped.toml");
-  s.blank.divisions = 3;
-  s.numerics.max_travel_increment_mm = 1.0;
-  s.numerics.max_travel_increment_per_length = 1e9;  // the 1 mm grid: symmetry needs no accuracy
-  s.process.punch_travel_mm = 5.0;
-  s.process.output_travels_mm = {5.0};
-  const RunResult r = simulate_shell3d(s);
-  ASSERT_TRUE(r.completed()) << r.message;
-  const ShellStage& st = r.shell->stages.back();
-  double max_dx = 0.0, max_dh = 0.0, max_u = 0.0;
-  int pairs = 0;
-  for (int i = 0; i < r.shell->mesh.num_nodes(); ++i) {
-    const Eigen::Vector3d p = r.shell->mesh.nodes[i];
-    const int j = r.shell->mesh.nearest_node(Eigen::Vector3d(p.y(), p.x(), p.z()));
-    ASSERT_LT((r.shell->mesh.nodes[j] - Eigen::Vector3d(p.y(), p.x(), p.z())).norm(), 1e-9);
-    const Eigen::Vector3d xi = st.x[i], xj = st.x[j];
-    max_dx = std::max(max_dx, (xi - Eigen::Vector3d(xj.y(), xj.x(), xj.z())).norm());
-    max_dh = std::max(max_dh, std::abs(st.thickness_mm[i] - st.thickness_mm[j]));
-    max_u = std::max(max_u, (xi - p).norm());
-    EXPECT_EQ(st.contact_tool[i], st.contact_tool[j]) << "nodes " << i << ", " << j;
-    ++pairs;
+  // Heun, and the implicit update at both ends of its theta range (its coupling term must be
+  // mirror-invariant: membrane tensors in global axes, summed through the thickness in one frame).
+  struct Case {
+    TimeIntegration integration;
+    double theta;
+  };
+  for (const Case c : {Case{TimeIntegration::kHeun, 0.5}, Case{TimeIntegration::kImplicit, 0.5},
+                       Case{TimeIntegration::kImplicit, 1.0}}) {
+    SCOPED_TRACE(c.integration == TimeIntegration::kHeun ? "heun" : "implicit");
+    SCOPED_TRACE(c.theta);
+    Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4b_square_clamped.toml");
+    s.blank.divisions = 3;
+    s.numerics.max_travel_increment_mm = 1.0;
+    s.numerics.max_travel_increment_per_length = 1e9;  // the 1 mm grid: symmetry needs no accuracy
+    s.numerics.time_integration = c.integration;
+    s.numerics.implicit_theta = c.theta;
+    s.process.punch_travel_mm = 5.0;
+    s.process.output_travels_mm = {5.0};
+    const RunResult r = simulate_shell3d(s);
+    ASSERT_TRUE(r.completed()) << r.message;
+    const ShellStage& st = r.shell->stages.back();
+    double max_dx = 0.0, max_dh = 0.0, max_u = 0.0;
+    int pairs = 0;
+    for (int i = 0; i < r.shell->mesh.num_nodes(); ++i) {
+      const Eigen::Vector3d p = r.shell->mesh.nodes[i];
+      const int j = r.shell->mesh.nearest_node(Eigen::Vector3d(p.y(), p.x(), p.z()));
+      ASSERT_LT((r.shell->mesh.nodes[j] - Eigen::Vector3d(p.y(), p.x(), p.z())).norm(), 1e-9);
+      const Eigen::Vector3d xi = st.x[i], xj = st.x[j];
+      max_dx = std::max(max_dx, (xi - Eigen::Vector3d(xj.y(), xj.x(), xj.z())).norm());
+      max_dh = std::max(max_dh, std::abs(st.thickness_mm[i] - st.thickness_mm[j]));
+      max_u = std::max(max_u, (xi - p).norm());
+      EXPECT_EQ(st.contact_tool[i], st.contact_tool[j]) << "nodes " << i << ", " << j;
+      ++pairs;
+    }
+    EXPECT_EQ(pairs, r.shell->mesh.num_nodes());
+    EXPECT_GT(max_u, 4.0);                        // the sheet did move
+    EXPECT_LT(max_dx, 1e-9 * s.blank.radius_mm);  // round-off of the mesh coordinates
+    EXPECT_LT(max_dh, 1e-9 * s.blank.thickness_mm);
   }
-  EXPECT_EQ(pairs, r.shell->mesh.num_nodes());
-  EXPECT_GT(max_u, 4.0);                        // the sheet did move
-  EXPECT_LT(max_dx, 1e-9 * s.blank.radius_mm);  // round-off of the mesh coordinates
-  EXPECT_LT(max_dh, 1e-9 * s.blank.thickness_mm);
 }
 
 TEST(Forming3d, BitwiseIdenticalForOneAndTwoThreads) {

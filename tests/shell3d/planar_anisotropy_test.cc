@@ -6,11 +6,11 @@
 #include "material/planar_anisotropy.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <iostream>
 #include <numbers>
-#include <omp.h>
 #include <string>
 
 #include "element/quadrature.h"
@@ -354,11 +354,53 @@ TEST(PlanarAnisotropy3d, RollingDirectionAlongYMirrorsRollingDirectionAlongX) {
               1e-8 * rd_x.steps.back().punch_force_N);
 }
 
+// Earing starts in the flange: the flange outline turns into lobes, and the material that stays
+// out longest ends up highest in the wall (the ears). With Hill 1948 and the ESAFORM TUAT
+// r-values (r0 + r90 - 2 r45 > 0: ears at 0 and 90 deg to RD) the flange draws in less along RD
+// and TD than at 45 deg, so early in the draw the rim radius is largest at 0 and 90 deg (measured
+// +0.32 / +0.25 mm on the 45 deg node at 8 mm); a normally anisotropic sheet (R-bar) draws in
+// evenly up to the mesh (1.4e-3 mm). The bundled 3D cup with the fixed-gap holder on 3
+// divisions, to 8 mm.
+TEST(PlanarAnisotropy3d, CupFlangeStaysOutLongestAlongRdAndTd) {
+  auto rim_radii = [](const RunResult& r) {
+    double r0 = 0.0, r45 = 0.0, r90 = 0.0, best45 = 1e9;
+    for (int node : r.shell->mesh.set("edge")) {
+      const Eigen::Vector3d& p0 = r.shell->mesh.nodes[node];
+      const Eigen::Vector3d& x = r.shell->stages.back().x[node];
+      const double rad = std::hypot(x.x(), x.y());
+      const double angle = std::atan2(p0.y(), p0.x());
+      if (std::abs(angle) < 1e-9) r0 = rad;
+      if (std::abs(angle - kPi / 2) < 1e-9) r90 = rad;
+      if (std::abs(angle - kPi / 4) < best45) {
+        best45 = std::abs(angle - kPi / 4);
+        r45 = rad;
+      }
+    }
+    return std::array<double, 3>{r0, r45, r90};
+  };
+  Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/esaform_cup_3d_hill48_tuat.toml");
+  s.blank.divisions = 3;
+  s.process.punch_travel_mm = 8.0;
+  s.process.output_travels_mm = {8.0};
+  const RunResult aniso = simulate_shell3d(s);
+  s.material.anisotropy.model = AnisotropyModel::kNormal;
+  s.material.r_value = 0.41;
+  const RunResult iso = simulate_shell3d(s);
+  ASSERT_TRUE(aniso.completed() && iso.completed()) << aniso.message << iso.message;
+  const auto a = rim_radii(aniso), i = rim_radii(iso);
+  std::cout << "[ measured ] rim radius at 0/45/90 deg: Hill 1948 " << a[0] << " " << a[1] << " "
+            << a[2] << " mm, normal anisotropy " << i[0] << " " << i[1] << " " << i[2]
+            << " mm; run times " << aniso.timings.total_s << " s, " << iso.timings.total_s
+            << " s\n";
+  const double iso_spread = std::abs(i[1] - 0.5 * (i[0] + i[2]));
+  EXPECT_GT(a[0] - a[1], 3.0 * iso_spread + 0.1);
+  EXPECT_GT(a[2] - a[1], 3.0 * iso_spread + 0.1);
+}
+
 // Yld2000-2d with isotropic data and exponent 2 is von Mises (alpha = 1): its local dual solve
 // must reproduce the closed-form law of R = 1 in a forming run (measured: equal to 1e-13).
 TEST(PlanarAnisotropy3d, IsotropicYld2000WithExponentTwoRunsLikeVonMises) {
-  Scene s =
-      load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
+  Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
   s.blank.divisions = 2;
   s.process.punch_travel_mm = 3.0;
   s.process.output_travels_mm = {3.0};
@@ -379,8 +421,7 @@ TEST(PlanarAnisotropy3d, IsotropicYld2000WithExponentTwoRunsLikeVonMises) {
 // Yld2000-2d warm-starts each flow point's local solve from its previous evaluation: still
 // bitwise the same for one and two threads (each element owns its points' starts).
 TEST(PlanarAnisotropy3d, Yld2000RunIsBitwiseIdenticalForOneAndTwoThreads) {
-  Scene s =
-      load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
+  Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
   s.blank.divisions = 2;
   s.process.punch_travel_mm = 2.0;
   s.process.output_travels_mm = {2.0};
