@@ -504,9 +504,12 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
     if (!options.uncertainty) {
       result.uncertainty_message = "not computed (model-form refit)";
     } else if (j.ok) {
+      UncertaintyOptions uncertainty_options = config.uncertainty;
+      for (const DataSpec& d : config.data)
+        uncertainty_options.eliminated_parameters += d.shape_only;
       result.uncertainty = estimate_uncertainty(j.jacobian, final_point->cost, x, objective.scale(),
                                                 objective.lower(), objective.upper(),
-                                                objective.names(), config.uncertainty);
+                                                objective.names(), uncertainty_options);
       add_forward_resolution(j.jacobian, noise_floor_cost(final_point->residuals, noise),
                              &result.uncertainty);
       result.uncertainty_available = true;

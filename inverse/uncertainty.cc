@@ -4,6 +4,7 @@
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -51,22 +52,26 @@ UncertaintySummary estimate_uncertainty(const Eigen::MatrixXd& jacobian, double 
   UncertaintySummary out;
   out.num_residuals = static_cast<int>(m);
   out.num_parameters = static_cast<int>(p);
-  out.degrees_of_freedom = static_cast<int>(m - p);
+  const Eigen::Index dof = m - p - std::max(0, options.eliminated_parameters);
+  out.degrees_of_freedom = static_cast<int>(dof);
 
-  const bool scaled = options.scale_by_residual_variance && m > p;
-  out.residual_variance = scaled ? 2.0 * cost / static_cast<double>(m - p) : 1.0;
+  const bool scaled = options.scale_by_residual_variance && dof > 0;
+  out.residual_variance = scaled ? 2.0 * cost / static_cast<double>(dof) : 1.0;
   if (scaled) {
-    out.quantile = student_t_two_sided(options.confidence, static_cast<double>(m - p));
-    out.quantile_kind = fmt::format("student_t({})", m - p);
+    out.quantile = student_t_two_sided(options.confidence, static_cast<double>(dof));
+    out.quantile_kind = fmt::format("student_t({})", dof);
   } else {
     out.quantile = normal_two_sided(options.confidence);
     out.quantile_kind = "normal";
   }
-  if (options.scale_by_residual_variance && m <= p) {
+  if (options.scale_by_residual_variance && dof <= 0) {
     out.statements.push_back(fmt::format(
-        "only {} residuals for {} parameters: the residual variance cannot be estimated; the "
+        "only {} residuals for {} parameters{}: the residual variance cannot be estimated; the "
         "intervals assume the stated measurement sigmas",
-        m, p));
+        m, p,
+        options.eliminated_parameters > 0
+            ? fmt::format(" and {} eliminated offset(s)", options.eliminated_parameters)
+            : std::string()));
   }
 
   // J_s = J diag(scale) = U S V^T;  Cov_s = s^2 V S^-2 V^T over the determined directions.

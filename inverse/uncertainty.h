@@ -34,6 +34,11 @@ struct UncertaintyOptions {
   double relative_error_threshold = 0.1;
   // The per-data-set lack-of-fit diagnostic (lack_of_fit.h).
   LackOfFitOptions lack_of_fit;
+  // Parameters eliminated from the residuals before the fit (the offset of each shape-only data
+  // set, cup_height_curve.h): not in the Jacobian, but they use degrees of freedom, so the
+  // residual variance and the Student-t quantile take m - p - eliminated_parameters. Set by
+  // calibrate(), not a config key.
+  int eliminated_parameters = 0;
 
   bool IsValid(std::string* why) const;
 };
@@ -54,7 +59,7 @@ struct ParameterUncertainty {
 struct UncertaintySummary {
   int num_residuals = 0;
   int num_parameters = 0;
-  int degrees_of_freedom = 0;           // m - p
+  int degrees_of_freedom = 0;           // m - p (- eliminated parameters)
   double residual_variance = 1.0;       // s^2 used to scale (1 when not scaled)
   double quantile = 0.0;                // the q of the intervals
   std::string quantile_kind;            // "student_t(dof)" or "normal"

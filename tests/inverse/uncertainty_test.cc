@@ -45,6 +45,34 @@ TEST(Uncertainty, ReproducesTheLinearLeastSquaresCovarianceExactly) {
   }
 }
 
+TEST(Uncertainty, AnEliminatedOffsetCountsInTheDegreesOfFreedom) {
+  // The same fit with the intercept a eliminated (variable projection, as the shape-only cup
+  // profile does): the Jacobian of b and c is that of the full fit with its columns centred, and
+  // the covariance of (b, c) must be the (b, c) block of the full fit's, s^2 = |r|^2 / (m - 3).
+  const int m = 12;
+  Eigen::MatrixXd full(m, 3);
+  Eigen::VectorXd r(m);
+  for (int i = 0; i < m; ++i) {
+    const double t = 0.5 * i;
+    full.row(i) << 1.0, t, t * t;
+    r[i] = 0.1 * std::sin(3.0 * i);
+  }
+  const double s2 = r.squaredNorm() / (m - 3);
+  const Eigen::MatrixXd expected = (full.transpose() * full).inverse() * s2;
+  Eigen::MatrixXd centred = full.rightCols(2);
+  centred.rowwise() -= centred.colwise().mean();
+  UncertaintyOptions options;
+  options.eliminated_parameters = 1;
+  const auto u = estimate_uncertainty(centred, 0.5 * r.squaredNorm(), Eigen::Vector2d(2.0, 3.0),
+                                      Eigen::Vector2d(0.5, 0.1), unbounded(-1, 2), unbounded(1, 2),
+                                      {"b", "c"}, options);
+  EXPECT_EQ(u.degrees_of_freedom, 9);
+  EXPECT_EQ(u.num_parameters, 2);
+  EXPECT_NEAR(u.residual_variance, s2, 1e-15);
+  EXPECT_LT((u.covariance - expected.bottomRightCorner(2, 2)).norm(), 1e-12 * expected.norm());
+  EXPECT_EQ(u.quantile_kind, "student_t(9)");
+}
+
 TEST(Uncertainty, UnscaledUsesTheStatedSigmasAndTheNormalQuantile) {
   Eigen::MatrixXd j(4, 1);
   j << 1, 1, 1, 1;
