@@ -43,7 +43,8 @@ constexpr Study kStudies[] = {
      "statistics and physical checks, and the cases where the solver returns an untrustworthy "
      "answer. Command: `build-exp/experiments/stability`."},
     {"04_esaform_cup", "4. Validation: the ESAFORM 2021 cup height (issue 6)",
-     "The AA6016-T4 cup for both blank-holder models (10 kN force, fixed 1.04 mm gap), three "
+     "The AA6016-T4 cup for both blank-holder models (10 kN force, fixed 1.2 mm gap; the "
+     "benchmark's 1.04 mm locks the flange), three "
      "published hardening fits and friction 0.05-0.10; predicted mean cup height against the "
      "measured 34.15 mm (33.13-35.26 mm). Command: `build-exp/experiments/esaform_cup`.",
      "cup_heights.md"},

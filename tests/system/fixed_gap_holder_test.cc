@@ -26,8 +26,11 @@ double flange_max_thickness(const Profile& p) {
 }
 
 TEST(FixedGapHolder, FlangeThickensUpToTheGapAndNoFurther) {
-  const Scene scene = test::load_with(
-      kCupGap, {{"process.punch_travel_mm", "24"}, {"process.output_travels_mm", "[8, 16, 24]"}});
+  // The benchmark's gap (the bundled scene has 1.2 mm: at 1.04 mm the flange locks later in the
+  // draw, esaform_cup_test.cc; to 24 mm it is held at the gap).
+  const Scene scene = test::load_with(kCupGap, {{"tool.holder.gap_mm", "1.04"},
+                                                {"process.punch_travel_mm", "24"},
+                                                {"process.output_travels_mm", "[8, 16, 24]"}});
   const double gap = scene.tools[2].gap_mm;
   ASSERT_EQ(gap, 1.04);
   const RunResult r = simulate(scene);
