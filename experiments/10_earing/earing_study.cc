@@ -176,15 +176,8 @@ int main(int argc, char** argv) {
     table.add(row);
     write_text(args.study.out_dir + "/" + label + "_cup_profile.csv",
                vs::cup_profile_csv(report.profile));
-    vs::PlotSeries line;
+    vs::PlotSeries line = vs::cup_profile_series(report.profile);
     line.label = fmt::format("{} {} n={}", k + 1, stem(path), scene.blank.divisions);
-    const vs::CupProfile& p = report.profile;
-    line.x.push_back(p.angle_from_rd_deg.back() - 360.0);
-    line.y.push_back(p.height_mm.back());
-    line.x.insert(line.x.end(), p.angle_from_rd_deg.begin(), p.angle_from_rd_deg.end());
-    line.y.insert(line.y.end(), p.height_mm.begin(), p.height_mm.end());
-    line.x.push_back(p.angle_from_rd_deg.front() + 360.0);
-    line.y.push_back(p.height_mm.front());
     line.style = vs::SeriesStyle::kLineAndMarkers;
     line.colour = static_cast<int>(k) + 1;
     figure.series.push_back(std::move(line));

@@ -50,6 +50,18 @@ double profile_rolling_direction_deg(const Scene& scene) {
   return scene.material.anisotropy.rolling_direction_deg;
 }
 
+PlotSeries cup_profile_series(const CupProfile& p) {
+  PlotSeries line;
+  if (p.angle_from_rd_deg.empty()) return line;
+  line.x.push_back(p.angle_from_rd_deg.back() - 360.0);
+  line.y.push_back(p.height_mm.back());
+  line.x.insert(line.x.end(), p.angle_from_rd_deg.begin(), p.angle_from_rd_deg.end());
+  line.y.insert(line.y.end(), p.height_mm.begin(), p.height_mm.end());
+  line.x.push_back(p.angle_from_rd_deg.front() + 360.0);
+  line.y.push_back(p.height_mm.front());
+  return line;
+}
+
 CupProfileReport cup_profile_report(const Scene& scene, const RunResult& result) {
   CupProfileReport r;
   r.ear_offset_deg = std::numeric_limits<double>::quiet_NaN();
@@ -106,16 +118,9 @@ SvgFigure cup_profile_figure(const Scene& scene, const RunResult& result,
   f.x_range = AxisRange{0.0, 360.0};
   if (report.available && !report.profile.angle_from_rd_deg.empty()) {
     const CupProfile& p = report.profile;
-    // The periodic profile closed across 0/360: the last point one turn back, the first one on.
-    PlotSeries line;
+    PlotSeries line = cup_profile_series(p);
     line.label = "computed";
     line.colour = 0;
-    line.x.push_back(p.angle_from_rd_deg.back() - 360.0);
-    line.y.push_back(p.height_mm.back());
-    line.x.insert(line.x.end(), p.angle_from_rd_deg.begin(), p.angle_from_rd_deg.end());
-    line.y.insert(line.y.end(), p.height_mm.begin(), p.height_mm.end());
-    line.x.push_back(p.angle_from_rd_deg.front() + 360.0);
-    line.y.push_back(p.height_mm.front());
     line.style =
         p.angle_from_rd_deg.size() <= 120 ? SeriesStyle::kLineAndMarkers : SeriesStyle::kLine;
     f.series.push_back(std::move(line));

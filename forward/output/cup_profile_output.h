@@ -37,6 +37,10 @@ CupProfileReport cup_profile_report(const Scene& scene, const RunResult& result)
 // angle_from_rd_deg,cup_height_mm,x_mm,y_mm,z_mm, one row per rim node by increasing angle.
 std::string cup_profile_csv(const CupProfile& profile);
 
+// The profile as a plot line closed across 0/360 deg (the last point one turn back, the first
+// one on), so that it spans the whole 0-360 axis.
+PlotSeries cup_profile_series(const CupProfile& profile);
+
 // Cup height [mm] against the angle from RD over 0-360 deg (the periodic profile closed across
 // 0/360), the measured points when the scene names them, the computed ears marked.
 SvgFigure cup_profile_figure(const Scene& scene, const RunResult& result,

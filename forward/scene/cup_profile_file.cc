@@ -11,19 +11,13 @@
 #include <vector>
 
 #include "core/error.h"
+#include "scene/text_checks.h"
 
 namespace vs {
 
 namespace {
 
 constexpr std::string_view kHeaderStart = "angle_from_rd_deg,cup_height_mm";
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
 
 // The fields of a line split at commas and/or runs of blanks ("1, 2", "1 2", "1,2").
 std::vector<std::string_view> fields(std::string_view line) {
@@ -80,7 +74,7 @@ CupProfilePoints read_cup_profile_file(const std::string& path) {
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
-    const std::string_view text = trim(line);
+    const std::string_view text = trim_blanks(line);
     if (text.empty() || text.front() == '#') continue;
     last_line = line_number;
     if (first && std::isalpha(static_cast<unsigned char>(text.front()))) {

@@ -8,19 +8,13 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "scene/text_checks.h"
 
 namespace vs {
 
 namespace {
 
 constexpr std::string_view kHeader = "plastic_strain,stress_MPa";
-
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
 
 // The header with the spaces around its fields removed, so "plastic_strain, stress_MPa" passes.
 std::string squeeze(std::string_view line) {
@@ -32,7 +26,7 @@ std::string squeeze(std::string_view line) {
 }
 
 bool parse_number(std::string_view text, double& value) {
-  text = trim(text);
+  text = trim_blanks(text);
   if (text.empty()) return false;
   if (text.front() == '+') text.remove_prefix(1);
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -77,7 +71,7 @@ FlowCurveTable read_flow_curve_csv(const std::string& path) {
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
-    const std::string_view text = trim(line);
+    const std::string_view text = trim_blanks(line);
     if (text.empty() || text.front() == '#') continue;
     last_line = line_number;
     if (!header_seen) {

@@ -67,6 +67,13 @@ void check_text_input_file(const std::string& path, const std::string& what) {
   }
 }
 
+std::string_view trim_blanks(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
 std::string_view strip_utf8_bom(std::string_view line) {
   if (line.substr(0, kBom.size()) == kBom) line.remove_prefix(kBom.size());
   return line;

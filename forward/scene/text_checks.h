@@ -18,6 +18,9 @@ inline constexpr std::size_t kMaxTextInputBytes = 64u << 20;
 // `what` names the file kind ("measurement file").
 void check_text_input_file(const std::string& path, const std::string& what);
 
+// `s` without leading and trailing blanks (space, tab, carriage return).
+std::string_view trim_blanks(std::string_view s);
+
 // `line` without a leading UTF-8 byte order mark (EF BB BF).
 std::string_view strip_utf8_bom(std::string_view line);
 
