@@ -4,6 +4,8 @@
 #include <cassert>
 #include <cmath>
 
+#include "material/elastic_start.h"
+
 namespace vs {
 
 Hardening::Hardening(const HardeningSpec& spec) : spec_(spec) {
@@ -13,6 +15,25 @@ Hardening::Hardening(const HardeningSpec& spec) : spec_(spec) {
   assert(spec_.law != HardeningLaw::kTable ||
          (spec_.table_strain.size() >= 2 &&
           spec_.table_strain.size() == spec_.table_stress_MPa.size()));
+}
+
+Hardening::Hardening(const HardeningSpec& spec, const ElasticSpec& elastic) : Hardening(spec) {
+  if (elastic.start_on()) start_modulus_MPa_ = elastic.E_MPa;
+}
+
+double Hardening::flow_stress(double eps) const {
+  if (start_modulus_MPa_ > 0.0)
+    return elastic_start_stress(*this, start_modulus_MPa_, eps, nullptr);
+  return curve_stress(eps);
+}
+
+double Hardening::slope(double eps) const {
+  if (start_modulus_MPa_ > 0.0) {
+    double s = 0.0;
+    elastic_start_stress(*this, start_modulus_MPa_, eps, &s);
+    return s;
+  }
+  return curve_slope(eps);
 }
 
 namespace {
@@ -26,7 +47,7 @@ std::size_t segment(const std::vector<double>& x, double eps) {
 
 }  // namespace
 
-double Hardening::flow_stress(double eps) const {
+double Hardening::curve_stress(double eps) const {
   eps = std::max(eps, 0.0);
   switch (spec_.law) {
     case HardeningLaw::kSwift:
@@ -47,7 +68,7 @@ double Hardening::flow_stress(double eps) const {
   return 0.0;
 }
 
-double Hardening::slope(double eps) const {
+double Hardening::curve_slope(double eps) const {
   eps = std::max(eps, 0.0);
   switch (spec_.law) {
     case HardeningLaw::kSwift:

@@ -36,7 +36,7 @@ std::vector<double> graded_radii(double radius, int n, double grading) {
 AxisymModel::AxisymModel(const Scene& scene)
     : scene_(scene),
       rule_(simpson_rule(scene.numerics.thickness_points)),
-      hardening_(scene.material.hardening),
+      hardening_(scene.material.hardening, scene.material.elastic),
       law_(scene.material.rate,
            scene.numerics.strain_rate_cutoff * scene.process.punch_speed_mm_per_s /
                scene.blank.radius_mm,
@@ -140,8 +140,9 @@ void AxisymModel::freeze_material(const std::vector<double>& eps_bar, double dt_
       hardening_viscosity_[e][k] = kTheta * hardening_.slope(eps_bar[e * np + k]) * dt_predicted;
     }
     // Transverse shear penalty: the viscosity of the section's mid point at the nominal rate
-    // (numerics.md section 3.4: keep transverse shear out of the flow rule).
-    const double sy = sigma_y_[e][np / 2];
+    // (numerics.md section 3.4: keep transverse shear out of the flow rule), from the hardening
+    // curve (the elastic start's flow stress is 0 in the undeformed sheet).
+    const double sy = hardening_.curve_stress(eps_bar[e * np + np / 2]);
     shear_viscosity_[e] = law_.is_constant()
                               ? law_.constant_mu()
                               : law_.effective_stress(sy, nominal_rate_) / (3.0 * nominal_rate_);

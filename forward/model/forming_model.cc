@@ -31,7 +31,7 @@ FormingModel::FormingModel(const Scene& scene)
       mesh_(forming_mesh(scene)),
       thick_(simpson_rule(scene.numerics.thickness_points)),
       rule_(element_rule(scene)),
-      hardening_(scene.material.hardening),
+      hardening_(scene.material.hardening, scene.material.elastic),
       law_(scene.material.rate,
            scene.numerics.strain_rate_cutoff * scene.process.punch_speed_mm_per_s /
                scene.blank.radius_mm,
@@ -247,10 +247,11 @@ void FormingModel::freeze_material(const std::vector<double>& eps_bar, double dt
     hardening_viscosity_[k] = hardening_theta_ * hardening_.slope(eps_bar[k]) * dt_predicted;
   }
   // Transverse-shear penalty: the viscosity of the element's centre, mid-thickness point at the
-  // nominal rate (numerics.md 3.4).
+  // nominal rate (numerics.md 3.4), from the hardening curve (the elastic start's flow stress is
+  // 0 in the undeformed sheet).
   const int centre = (shell9_inplane_points(rule_) / 2) * nt + nt / 2;
   for (int e = 0; e < ne; ++e) {
-    const double sy = sigma_y_[static_cast<std::size_t>(e * fp + centre)];
+    const double sy = hardening_.curve_stress(eps_bar[static_cast<std::size_t>(e * fp + centre)]);
     shear_viscosity_[e] = law_.is_constant()
                               ? law_.constant_mu()
                               : law_.effective_stress(sy, nominal_rate_) / (3.0 * nominal_rate_);

@@ -65,6 +65,16 @@ const char* name(RateLaw law) {
   return "unknown";
 }
 
+const char* name(ElasticLaw law) {
+  switch (law) {
+    case ElasticLaw::kNone:
+      return "none";
+    case ElasticLaw::kIsotropic:
+      return "isotropic";
+  }
+  return "unknown";
+}
+
 const char* name(AnisotropyModel m) {
   switch (m) {
     case AnisotropyModel::kNormal:
@@ -186,6 +196,13 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                                  {"sigma_b_ratio", an.sigma_b_ratio},
                                  {"r_b", an.r_b},
                                  {"exponent", an.exponent}};
+
+  const ElasticSpec& el = s.material.elastic;
+  j["material"]["elastic"] = {{"law", name(el.law)},
+                              {"E_MPa", el.E_MPa},
+                              {"nu", el.nu},
+                              {"start", el.start},
+                              {"strains", el.strains}};
 
   Json tools = Json::array();
   for (const ToolSpec& t : s.tools) tools.push_back(tool_json(t));

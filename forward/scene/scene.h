@@ -99,10 +99,32 @@ struct AnisotropySpec {
   bool planar() const { return model != AnisotropyModel::kNormal; }
 };
 
+// Isotropic elasticity ([material.elastic], both geometries): a first-order correction of the
+// rigid-plastic flow formulation, not an elastic-plastic solver (material/elastic_start.h).
+enum class ElasticLaw {
+  kNone,       // rigid-(visco)plastic: no elasticity (the default)
+  kIsotropic,  // Hooke's law with E_MPa and nu
+};
+
+struct ElasticSpec {
+  ElasticLaw law = ElasticLaw::kNone;
+  double E_MPa = 210000.0;  // Young's modulus (required with kIsotropic)
+  double nu = 0.3;          // Poisson's ratio, in (-1, 0.5) (required with kIsotropic)
+  // The flow stress at accumulated strain e is the elastic-plastic secant curve
+  // min(E e, sigma_y(e - sigma / E)) instead of sigma_y(e).
+  bool start = true;
+  // The reported thickness strains include the elastic part from the current stress.
+  bool strains = true;
+  bool on() const { return law != ElasticLaw::kNone; }
+  bool start_on() const { return on() && start; }
+  bool strains_on() const { return on() && strains; }
+};
+
 struct MaterialSpec {
   HardeningSpec hardening;
   RateSpec rate;
   AnisotropySpec anisotropy;
+  ElasticSpec elastic;
   // Normal anisotropy (Lankford) R = width / thickness strain rate in uniaxial tension.
   // Hill 1948 with planar isotropy, normalised so that sigma_bar equals the in-plane uniaxial
   // flow stress: the hardening curve is the in-plane tensile curve for every R.

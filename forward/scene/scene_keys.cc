@@ -19,6 +19,7 @@ MaterialSpec& material(Scene& s, ToolSpec&) { return s.material; }
 HardeningSpec& hardening(Scene& s, ToolSpec&) { return s.material.hardening; }
 RateSpec& rate(Scene& s, ToolSpec&) { return s.material.rate; }
 AnisotropySpec& anisotropy(Scene& s, ToolSpec&) { return s.material.anisotropy; }
+ElasticSpec& elastic(Scene& s, ToolSpec&) { return s.material.elastic; }
 ToolSpec& tool(Scene&, ToolSpec& t) { return t; }
 ProcessSpec& process(Scene& s, ToolSpec&) { return s.process; }
 NumericsSpec& numerics(Scene& s, ToolSpec&) { return s.numerics; }
@@ -262,6 +263,31 @@ std::vector<KeySpec> build_keys() {
            "1/s", open_above(0), "Power-law reference strain rate."))
       .applies_to = {"power"};
 
+  // [material.elastic]
+  const std::string_view el = "material.elastic";
+  add(choice(el, "law", enum_field<&elastic, &ElasticSpec::law>(), {"none", "isotropic"},
+             "Elasticity: none = rigid-(visco)plastic; isotropic = Hooke's law with E_MPa and "
+             "nu, as a first-order correction (the elastic start of the flow stress and the "
+             "elastic part of the reported thickness strain; see 'Elasticity')."));
+  add(make(el, "E_MPa", kFloat, float_field<&elastic, &ElasticSpec::E_MPa>(), "MPa", open_above(0),
+           "Young's modulus."))
+      .applies_to = {"isotropic"};
+  keys.back().required = true;
+  add(make(el, "nu", kFloat, float_field<&elastic, &ElasticSpec::nu>(), "", open(-1, 0.5),
+           "Poisson's ratio."))
+      .applies_to = {"isotropic"};
+  keys.back().required = true;
+  add(make(el, "start", KeyType::kBool, bool_field<&elastic, &ElasticSpec::start>(), "", Range{},
+           "Elastic start: the flow stress at accumulated strain e is the secant "
+           "elastic-plastic curve min(E e, sigma_y(e - sigma / E)) (monotonic loading; no "
+           "elastic unloading)."))
+      .applies_to = {"isotropic"};
+  add(make(el, "strains", KeyType::kBool, bool_field<&elastic, &ElasticSpec::strains>(), "",
+           Range{},
+           "Reported thickness strains (and thicknesses) of the strain profiles include the "
+           "elastic part from the current in-plane stress by Hooke's law."))
+      .applies_to = {"isotropic"};
+
   // [[tool]]
   auto& name =
       add(make("tool", "name", KeyType::kString, string_field<&tool, &ToolSpec::name>(), "",
@@ -463,6 +489,7 @@ Range open_above(double lo) { return Range{lo, kInf, false, false}; }
 Range at_least(double lo) { return Range{lo, kInf, true, false}; }
 Range closed(double lo, double hi) { return Range{lo, hi, true, true}; }
 Range open_closed(double lo, double hi) { return Range{lo, hi, false, true}; }
+Range open(double lo, double hi) { return Range{lo, hi, false, false}; }
 
 std::string KeySpec::address_in_section() const {
   if (section.empty()) return std::string(name);
@@ -484,6 +511,9 @@ const std::vector<SectionSpec>& scene_sections() {
       {"material.rate", "[material.rate]", "Strain-rate sensitivity; the keys depend on `law`."},
       {"material.anisotropy", "[material.anisotropy]",
        "Planar anisotropy (shell3d only); the keys required depend on `model`."},
+      {"material.elastic", "[material.elastic]",
+       "Isotropic elasticity as a first-order correction (both geometries); the keys depend on "
+       "`law`."},
       {"tool", "[[tool]]", "Rigid tools, one table each; the keys allowed depend on `kind`."},
       {"process", "[process]", "Punch motion and output stages."},
       {"numerics", "[numerics]", "Integration, nonlinear solver and step control."},
@@ -504,8 +534,11 @@ const KeySpec* find_key(std::string_view section, std::string_view name) {
 
 const VariantSelector* find_selector(std::string_view section) {
   static const std::vector<VariantSelector> selectors = {
-      {"material.hardening", "law", "hardening law"},       {"material.rate", "law", "rate law"},
-      {"material.anisotropy", "model", "anisotropy model"}, {"tool", "kind", "tool kind"},
+      {"material.hardening", "law", "hardening law"},
+      {"material.rate", "law", "rate law"},
+      {"material.anisotropy", "model", "anisotropy model"},
+      {"tool", "kind", "tool kind"},
+      {"material.elastic", "law", "elasticity law"},
       {"forming_limit", "model", "forming limit model"},
   };
   for (const VariantSelector& s : selectors) {

@@ -45,6 +45,7 @@ Range open_above(double lo);              // (lo, inf)
 Range at_least(double lo);                // [lo, inf)
 Range closed(double lo, double hi);       // [lo, hi]
 Range open_closed(double lo, double hi);  // (lo, hi]
+Range open(double lo, double hi);         // (lo, hi)
 
 // Accessors into the Scene under construction. The ToolSpec argument is the tool being read for
 // [[tool]] keys and is ignored elsewhere. Exactly one accessor matching the key's type is set,

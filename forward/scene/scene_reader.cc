@@ -150,7 +150,7 @@ class SceneReader {
 
   void read_material(const toml::table& material) {
     read_keys(material, "material", "in [material]", "material", no_tool_,
-              {"hardening", "rate", "anisotropy"});
+              {"hardening", "rate", "anisotropy", "elastic"});
     if (const toml::node* node = material.get("hardening")) {
       const toml::table& hardening = as_table(*node, "material.hardening");
       where_.add("material.hardening", hardening.source());
@@ -162,6 +162,12 @@ class SceneReader {
       const toml::table& rate = as_table(*node, "material.rate");
       where_.add("material.rate", rate.source());
       read_keys(rate, "material.rate", "in [material.rate]", "material.rate", no_tool_, {});
+    }
+    if (const toml::node* node = material.get("elastic")) {
+      const toml::table& elastic = as_table(*node, "material.elastic");
+      where_.add("material.elastic", elastic.source());
+      read_keys(elastic, "material.elastic", "in [material.elastic]", "material.elastic", no_tool_,
+                {});
     }
     if (const toml::node* node = material.get("anisotropy")) {
       const toml::table& anisotropy = as_table(*node, "material.anisotropy");
