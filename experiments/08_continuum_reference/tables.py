@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Print the Markdown tables of the README from results/comparison.csv and convergence.csv.
+"""Print the Markdown tables of the README from results/comparison.csv, convergence.csv,
+normal_stress.csv and elastic.csv (section 10).
 Python 3 standard library only."""
 import csv
 import os
@@ -38,3 +39,32 @@ def table(name):
 for n in ("comparison.csv", "convergence.csv", "normal_stress.csv"):
     print(f"\n### {n}")
     table(n)
+
+
+def elastic_table(name="elastic.csv"):
+    """Section 10: one row per case and travel, the variants of compare_elastic.sh side by side."""
+    variants = ("off", "strains", "start", "both")
+    by = {}
+    for r in rows(name):
+        case, variant = r["label"].rsplit("_", 1)
+        by.setdefault(case, {}).setdefault(r["punch_travel_mm"], {})[variant] = r
+    if not by:
+        return
+    print(f"\n### {name}\n")
+    print("| case | travel [mm] | dF off | dF start | pole de3 off | strains | start | both | "
+          "max abs de3 off | strains | start | both | rms de3 off | strains | start | both |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for case, travels in by.items():
+        for t, vs in travels.items():
+            def f(v, key, fmt):
+                r = vs.get(v)
+                return format(float(r[key]), fmt) if r and r.get(key) else ""
+            cells = [case, f"{float(t):g}",
+                     f("off", "force_error_pct", "+.2f"), f("start", "force_error_pct", "+.2f")]
+            cells += [f(v, "eps3_pole_diff", "+.4f") for v in variants]
+            cells += [f(v, "eps3_max_abs_diff", ".4f") for v in variants]
+            cells += [f(v, "eps3_rms_diff", ".4f") for v in variants]
+            print("| " + " | ".join(cells) + " |")
+
+
+elastic_table()
