@@ -27,6 +27,12 @@ double Hardening::flow_stress(double eps) const {
   return curve_stress(eps);
 }
 
+double Hardening::flow_stress_and_slope(double eps, double* slope) const {
+  if (start_modulus_MPa_ > 0.0) return elastic_start_stress(*this, start_modulus_MPa_, eps, slope);
+  *slope = curve_slope(eps);
+  return curve_stress(eps);
+}
+
 double Hardening::slope(double eps) const {
   if (start_modulus_MPa_ > 0.0) {
     double s = 0.0;

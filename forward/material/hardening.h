@@ -20,6 +20,8 @@ class Hardening {
   double flow_stress(double eps) const;
   // d flow_stress / d eps [MPa].
   double slope(double eps) const;
+  // Both at once (one root solve with the elastic start).
+  double flow_stress_and_slope(double eps, double* slope) const;
 
   // The hardening curve itself, sigma_y at effective plastic strain eps, and its slope.
   double curve_stress(double eps) const;

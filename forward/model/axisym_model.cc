@@ -136,8 +136,9 @@ void AxisymModel::freeze_material(const std::vector<double>& eps_bar, double dt_
   shear_viscosity_.assign(num_elements(), 0.0);
   for (int e = 0; e < num_elements(); ++e) {
     for (std::size_t k = 0; k < np; ++k) {
-      sigma_y_[e][k] = hardening_.flow_stress(eps_bar[e * np + k]);
-      hardening_viscosity_[e][k] = kTheta * hardening_.slope(eps_bar[e * np + k]) * dt_predicted;
+      double H = 0.0;
+      sigma_y_[e][k] = hardening_.flow_stress_and_slope(eps_bar[e * np + k], &H);
+      hardening_viscosity_[e][k] = kTheta * H * dt_predicted;
     }
     // Transverse shear penalty: the viscosity of the section's mid point at the nominal rate
     // (numerics.md section 3.4: keep transverse shear out of the flow rule), from the hardening

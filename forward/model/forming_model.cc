@@ -243,8 +243,9 @@ void FormingModel::freeze_material(const std::vector<double>& eps_bar, double dt
   hardening_viscosity_.resize(sigma_y_.size());
   shear_viscosity_.assign(ne, 0.0);
   for (std::size_t k = 0; k < sigma_y_.size(); ++k) {
-    sigma_y_[k] = hardening_.flow_stress(eps_bar[k]);
-    hardening_viscosity_[k] = hardening_theta_ * hardening_.slope(eps_bar[k]) * dt_predicted;
+    double H = 0.0;
+    sigma_y_[k] = hardening_.flow_stress_and_slope(eps_bar[k], &H);
+    hardening_viscosity_[k] = hardening_theta_ * H * dt_predicted;
   }
   // Transverse-shear penalty: the viscosity of the element's centre, mid-thickness point at the
   // nominal rate (numerics.md 3.4), from the hardening curve (the elastic start's flow stress is

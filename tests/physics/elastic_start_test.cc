@@ -91,10 +91,14 @@ TEST(ElasticStart, IsTheUniaxialElasticPlasticCurve) {
   }
 }
 
-// The slope is the derivative of the curve (central differences, Swift).
+// The slope is the derivative of the curve (central differences, Swift); flow_stress_and_slope
+// (what the models call) gives both, bit for bit.
 TEST(ElasticStart, SlopeIsTheDerivative) {
   const Hardening flow(swift(), steel());
   for (double e : {2e-4, 0.002, 0.01, 0.05, 0.3}) {
+    double slope = 0.0;
+    EXPECT_EQ(flow.flow_stress_and_slope(e, &slope), flow.flow_stress(e));
+    EXPECT_EQ(slope, flow.slope(e));
     const double h = 1e-7 * std::max(e, 1e-3);
     const double fd = (flow.flow_stress(e + h) - flow.flow_stress(e - h)) / (2 * h);
     EXPECT_NEAR(flow.slope(e), fd, 1e-5 * std::abs(fd)) << e;
@@ -113,6 +117,9 @@ TEST(ElasticStart, OffIsTheHardeningCurve) {
     for (double e : {0.0, 1e-4, 0.01, 0.2}) {
       EXPECT_EQ(flow.flow_stress(e), curve.flow_stress(e));
       EXPECT_EQ(flow.slope(e), curve.slope(e));
+      double slope = 0.0;
+      EXPECT_EQ(flow.flow_stress_and_slope(e, &slope), curve.curve_stress(e));
+      EXPECT_EQ(slope, curve.curve_slope(e));
     }
   }
 }
