@@ -269,10 +269,15 @@ std::vector<KeySpec> build_keys() {
              "Elasticity: none = rigid-(visco)plastic; isotropic = Hooke's law with E_MPa and "
              "nu, as a first-order correction (the elastic start of the flow stress and the "
              "elastic part of the reported thickness strain; see 'Elasticity')."));
-  add(make(el, "E_MPa", kFloat, float_field<&elastic, &ElasticSpec::E_MPa>(), "MPa", open_above(0),
-           "Young's modulus."))
+  add(make(el, "E_MPa", kFloat, float_field<&elastic, &ElasticSpec::E_MPa>(), "MPa",
+           closed(1e3, 1e7),
+           "Young's modulus (1e3-1e7 MPa holds every sheet material; a far smaller E leaves the "
+           "first step without stiffness)."))
       .applies_to = {"isotropic"};
   keys.back().required = true;
+  keys.back().bound_reason =
+      "no sheet material is that stiff, and the step that crosses yield would overshoot the flow "
+      "stress by E times its strain increment";
   add(make(el, "nu", kFloat, float_field<&elastic, &ElasticSpec::nu>(), "", open(-1, 0.5),
            "Poisson's ratio."))
       .applies_to = {"isotropic"};

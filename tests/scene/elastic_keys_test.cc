@@ -42,9 +42,13 @@ TEST(ElasticKeys, IsotropicIsReadWithBothParts) {
 
 TEST(ElasticKeys, BadModuliAreOneLineErrors) {
   EXPECT_EQ(scene_error(with_elastic("law = \"isotropic\"\nE_MPa = 0\nnu = 0.3\n")),
-            "scene.toml:12:9: material.elastic.E_MPa = 0 is out of range (0, inf) MPa");
+            "scene.toml:12:9: material.elastic.E_MPa = 0 is out of range [1000, 10000000] MPa");
   EXPECT_EQ(scene_error(with_elastic("law = \"isotropic\"\nE_MPa = -5\nnu = 0.3\n")),
-            "scene.toml:12:9: material.elastic.E_MPa = -5 is out of range (0, inf) MPa");
+            "scene.toml:12:9: material.elastic.E_MPa = -5 is out of range [1000, 10000000] MPa");
+  EXPECT_EQ(scene_error(with_elastic("law = \"isotropic\"\nE_MPa = 1e12\nnu = 0.3\n")),
+            "scene.toml:12:9: material.elastic.E_MPa = 1000000000000 is out of range [1000, "
+            "10000000] MPa: no sheet material is that stiff, and the step that crosses yield "
+            "would overshoot the flow stress by E times its strain increment");
   EXPECT_EQ(scene_error(with_elastic("law = \"isotropic\"\nE_MPa = 2e5\nnu = 0.5\n")),
             "scene.toml:13:6: material.elastic.nu = 0.5 is out of range (-1, 0.5)");
   EXPECT_EQ(scene_error(with_elastic("law = \"isotropic\"\nE_MPa = 2e5\nnu = -1\n")),
