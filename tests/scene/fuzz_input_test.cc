@@ -198,7 +198,8 @@ TEST(FuzzInput, AbsurdSizesAndStepCountsAreRefusedWithTheReason) {
       {"[numerics]\nmax_travel_increment_per_length = 1e-7\n",
        "more than the 1e+06 a run may take"},
       {"[process]\npunch_travel_mm = 1e6\n", "shorten process.punch_travel_mm"},
-      {"[blank]\nelements = 2000\n[process]\npunch_travel_mm = 100\n",
+      {"[blank]\nelements = 2000\n[process]\npunch_travel_mm = 100\n[numerics]\n"
+       "max_travel_increment_per_length = 0.025\n",
        "more than the 1e+08 allowed for axisymmetric runs"},
       {"friction = 1e6\n", "use \"sticking\""},  // continues the punch's [[tool]] table
   };

@@ -5,8 +5,9 @@
 // The DISABLED_ diagnostic prints both runs side by side (travel, force, stuck-cap radius,
 // thickness strain profile); environment variables VS_DIAG_TRAVEL, VS_DIAG_N, VS_DIAG_INC,
 // VS_DIAG_PL, VS_DIAG_AXI_PL, VS_DIAG_AXI_N, VS_DIAG_MU (friction instead of sticking),
-// VS_DIAG_EVERY, VS_DIAG_STEPS, VS_DIAG_VERBOSE, VS_DIAG_PROFILES, VS_DIAG_AXI_ONLY select the
-// run and what is printed:
+// VS_DIAG_EVERY, VS_DIAG_STEPS, VS_DIAG_VERBOSE, VS_DIAG_PROFILES, VS_DIAG_AXI_ONLY,
+// VS_DIAG_TI / VS_DIAG_AXI_TI (time integration of the 3D run / the twin: 0 heun, 1 euler,
+// 2 implicit; default: the scene default) select the run and what is printed:
 //   VS_DIAG_TRAVEL=10 build/tests/vs_shell3d_tests --gtest_also_run_disabled_tests
 //       --gtest_filter='*DiagnoseSticking*'
 #include <gtest/gtest.h>
@@ -18,12 +19,12 @@
 #include <limits>
 #include <string>
 
-#include "run/simulate.h"
-#include "scene/load_scene.h"
 #include "common/axisym_comparison.h"
-#include "stepping/shell3d_driver.h"
 #include "model/forming_fields.h"
 #include "model/forming_model.h"
+#include "run/simulate.h"
+#include "scene/load_scene.h"
+#include "stepping/shell3d_driver.h"
 
 namespace vs::shell3d {
 namespace {
@@ -73,8 +74,7 @@ TEST(Forming3dSticking, AxisymmetricTwinIsConvergedInTheTravelStep) {
   Scene s = sticking_scene(4, 20.0, {20.0});
   s.numerics.max_travel_increment_per_length = 1e9;  // a 3D scene on its coarse 0.5 mm grid
   const Scene twin = axisymmetric_twin(s, 30);
-  EXPECT_LE(twin.numerics.max_travel_increment_per_length,
-            NumericsSpec{}.max_travel_increment_per_length);
+  EXPECT_LE(twin.numerics.max_travel_increment_per_length, kTwinTravelIncrementPerLength);
   Scene half = twin;
   half.numerics.max_travel_increment_per_length *= 0.5;
   Scene coarse = twin;
@@ -135,10 +135,17 @@ TEST(Forming3dSticking, DISABLED_DiagnoseSticking) {
   s.numerics.max_travel_increment_mm = env("VS_DIAG_INC", s.numerics.max_travel_increment_mm);
   s.numerics.max_travel_increment_per_length =
       env("VS_DIAG_PL", s.numerics.max_travel_increment_per_length);
+  auto integration = [](const char* name, TimeIntegration fallback) {
+    const double v = env(name, -1.0);
+    if (v < 0.0) return fallback;
+    return v < 0.5 ? TimeIntegration::kHeun
+                   : (v < 1.5 ? TimeIntegration::kEuler : TimeIntegration::kImplicit);
+  };
+  s.numerics.time_integration = integration("VS_DIAG_TI", s.numerics.time_integration);
   const double h0 = s.blank.thickness_mm;
   Scene a = axisymmetric_twin(s, static_cast<int>(env("VS_DIAG_AXI_N", 30)));
-  a.numerics.max_travel_increment_per_length =
-      env("VS_DIAG_AXI_PL", Scene{}.numerics.max_travel_increment_per_length);
+  a.numerics.max_travel_increment_per_length = env("VS_DIAG_AXI_PL", kTwinTravelIncrementPerLength);
+  a.numerics.time_integration = integration("VS_DIAG_AXI_TI", a.numerics.time_integration);
   const RunResult axi = simulate(a);
   std::printf("axisym: %s, %zu steps\n", axi.message.c_str(), axi.steps.size());
   if (env("VS_DIAG_AXI_ONLY", 0) != 0) {

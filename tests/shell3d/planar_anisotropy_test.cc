@@ -347,9 +347,12 @@ TEST(PlanarAnisotropy3d, RollingDirectionAlongYMirrorsRollingDirectionAlongX) {
             << ", |eps_t(x) - eps_t(y)| of one run " << lines << " (largest |eps_t| " << largest
             << ")\n";
   EXPECT_LT(mirror, 1e-8);
-  // r0 = 0.526 and r90 = 0.601 are close: measured 1.4 % of the largest strain (an isotropic
-  // sheet: round-off, as `mirror`).
-  EXPECT_GT(lines, 0.01 * largest);
+  // r0 = 0.526 and r90 = 0.601 are close, and the difference is step-dependent: converged in the
+  // travel step it is 0.42 % of the largest strain (grid 0.03125 / 0.0625 mm: 0.42 / 0.43 %, Heun
+  // and implicit alike), 0.92-0.95 % at 0.125-0.25 mm, 0.45 % on the 0.5 mm grid of the defaults
+  // (Nov 2026; a 1 % bound held only at some steps). An isotropic sheet's lines differ by
+  // round-off (as `mirror`, ~1e-12), so 0.1 % still tells the anisotropy from none.
+  EXPECT_GT(lines, 1e-3 * largest);
   EXPECT_NEAR(rd_x.steps.back().punch_force_N, rd_y.steps.back().punch_force_N,
               1e-8 * rd_x.steps.back().punch_force_N);
 }

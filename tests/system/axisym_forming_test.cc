@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../../experiments/common/axisym_comparison.h"
 #include "../../experiments/common/stability.h"
 #include "forming_util.h"
 
@@ -120,12 +121,22 @@ TEST(AxisymForming, StickingIsNeitherPathNorMeshSensitive) {
   // (peak load 43.7 / 45.5 / 44.6 kN at tolerance 1e-6 / 3e-7 / 1e-7, 48 elements) and on the
   // mesh (44.4 / 45.8 / 48.9 kN at 24 / 48 / 69 elements). It now slides without friction until
   // the patch grows past it: 49.55 kN at every tolerance; 50.4 / 49.6 / 50.2 kN.
+  // The mesh check is on the mean force over the last 5 mm (work / travel), not on the peak: the
+  // load curve near 30 mm is a sawtooth (an element at the edge of the stuck cap necks, sticks to
+  // the punch, and the force jumps: 24 elements, step-converged, 46.1 kN at 29.6 mm, 51.5 kN at
+  // 30 mm), so the peak is wherever the last jump falls. Converged in the step (grid 0.0078 mm,
+  // Heun / implicit) the peak is 51.53 / 51.51 kN at 24 and 49.29 / 49.21 kN at 48 elements,
+  // 4.5 % apart: a 3 % bound on it held only at Heun's 0.025 element lengths per step (50.51 /
+  // 49.69 kN), failed at half that step (51.28 / 49.46 kN, 3.6 %) and at implicit 0.25 (46.90 /
+  // 50.92 kN). The mean over 25-30 mm is 43.84 / 44.30 kN converged (1.1 %), 43.88 / 44.40 kN
+  // at Heun 0.025 and 43.83 / 44.23 kN at implicit 0.25 (within 0.2 % of converged).
   const RunResult a = Stretch("inf", "24");
   const RunResult b = Stretch("inf", "24", {{"numerics.tolerance", "1e-7"}});
   const RunResult c = Stretch("inf", "48");
   ASSERT_TRUE(a.completed() && b.completed() && c.completed());
   EXPECT_NEAR(test::peak_force(b) / test::peak_force(a), 1.0, 2e-3);
-  EXPECT_NEAR(test::peak_force(c) / test::peak_force(a), 1.0, 0.03);
+  EXPECT_NEAR(shell3d::mean_force(c.steps, 25.0, 30.0) / shell3d::mean_force(a.steps, 25.0, 30.0),
+              1.0, 0.03);
   const double ha = a.profiles.back().thickness_mm[test::thinnest(a.profiles.back())];
   const double hc = c.profiles.back().thickness_mm[test::thinnest(c.profiles.back())];
   EXPECT_NEAR(hc / ha, 1.0, 0.03);
