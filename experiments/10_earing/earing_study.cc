@@ -9,11 +9,15 @@
 //   DIR/<k>_<scene>_cup_profile.csv             the profile of run k (as a run folder's
 //                                               cup_profile.csv)
 //   DIR/earing_profiles.svg                     every run's profile and the measured points
+//   DIR/reference_profiles.csv                  with --reference: the same summary of each
+//                                               reference profile (other codes' results)
 // See README.md next to this file.
 //
-//   earing_study SCENE.toml [SCENE.toml ...] [--set KEY=VALUE ...] [--measured FILE] [--out DIR]
-//                [--quick]
+//   earing_study [SCENE.toml ...] [--set KEY=VALUE ...] [--measured FILE] [--reference FILE ...]
+//                [--out DIR] [--quick]
 // --measured: the measured profile (default: the ESAFORM 2021 file in data/measured/);
+// --reference: a profile file computed elsewhere (repeatable; the format of --measured), summarised
+//   and plotted (thin dashed lines) beside the runs; with references, the scenes may be omitted;
 // --quick: the first scene only.
 #include <fmt/format.h>
 
@@ -42,6 +46,7 @@ const std::string kDefaultMeasured =
 struct Args {
   std::vector<std::string> scenes;
   std::string measured = kDefaultMeasured;
+  std::vector<std::string> references;
   StudyArgs study;
 };
 
@@ -54,6 +59,8 @@ Args parse(int argc, char** argv) {
     const std::string s = argv[i];
     if (s == "--measured" && i + 1 < argc) {
       a.measured = argv[++i];
+    } else if (s == "--reference" && i + 1 < argc) {
+      a.references.push_back(argv[++i]);
     } else if ((s == "--set" || s == "--out" || s == "--steps") && i + 1 < argc) {
       rest.push_back(argv[i]);
       rest.push_back(argv[++i]);
@@ -65,13 +72,13 @@ Args parse(int argc, char** argv) {
   }
   a.study = parse_args(static_cast<int>(rest.size()), rest.data(),
                        std::string(VS_SOURCE_DIR) + "/experiments/10_earing/results");
-  if (a.scenes.empty()) {
+  if (a.scenes.empty() && a.references.empty()) {
     std::cerr << "usage: " << argv[0]
-              << " SCENE.toml [SCENE.toml ...] [--set KEY=VALUE ...] [--measured FILE] "
-                 "[--out DIR] [--quick]\n";
+              << " [SCENE.toml ...] [--set KEY=VALUE ...] [--measured FILE] "
+                 "[--reference FILE ...] [--out DIR] [--quick]\n";
     std::exit(2);
   }
-  if (a.study.quick) a.scenes.resize(1);
+  if (a.study.quick && !a.scenes.empty()) a.scenes.resize(1);
   return a;
 }
 
@@ -84,6 +91,51 @@ std::string angles(const std::vector<vs::ProfileExtremum>& list) {
 }
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+// The summary columns shared by the runs' table and the references' table.
+std::vector<std::string> summary_cells(const vs::CupProfileSummary& s,
+                                       const vs::CupProfileSummary& measured) {
+  return {std::to_string(s.points),
+          fmt::format("{:.3f}", s.mean_height_mm),
+          fmt::format("{:.3f}", s.min_height_mm),
+          fmt::format("{:.3f}", s.max_height_mm),
+          fmt::format("{:.3f}", s.amplitude_mm),
+          angles(s.ears),
+          angles(s.valleys),
+          fmt::format("{:+.3f}", s.mean_height_mm - measured.mean_height_mm),
+          fmt::format("{:.3f}", s.amplitude_mm / measured.amplitude_mm),
+          g4(vs::max_extremum_offset_deg(s.ears, measured.ears))};
+}
+
+const std::vector<std::string> kSummaryHeader = {
+    "rim_points",    "mean_height_mm",         "min_height_mm",
+    "max_height_mm", "amplitude_mm",           "ears_deg",
+    "valleys_deg",   "mean_minus_measured_mm", "amplitude_over_measured",
+    "ear_offset_deg"};
+
+// Reference profiles (other codes' results): one summary row each, and a thin dashed line each.
+Table reference_table(const std::vector<std::string>& files, const vs::CupProfileSummary& measured,
+                      vs::SvgFigure& figure) {
+  Table table;
+  table.header = {"reference"};
+  table.header.insert(table.header.end(), kSummaryHeader.begin(), kSummaryHeader.end());
+  for (const std::string& file : files) {
+    const vs::CupProfilePoints p = vs::read_cup_profile_file(file);
+    const vs::CupProfileSummary s = vs::summarize_cup_profile(p.angle_deg, p.height_mm);
+    std::vector<std::string> row = {stem(file)};
+    const std::vector<std::string> cells = summary_cells(s, measured);
+    row.insert(row.end(), cells.begin(), cells.end());
+    table.add(row);
+    vs::PlotSeries line;
+    line.x = p.angle_deg;
+    line.y = p.height_mm;
+    line.colour = 7;
+    line.dashed = true;
+    line.line_width_px = 0.8;
+    figure.series.push_back(std::move(line));
+  }
+  return table;
+}
 
 }  // namespace
 
@@ -107,26 +159,9 @@ int main(int argc, char** argv) {
   fmt::print("machine: {}, load average {} at start\n", machine_description(), load_average());
 
   Table table;
-  table.header = {"run",
-                  "scene",
-                  "overrides",
-                  "symmetry",
-                  "divisions",
-                  "steps",
-                  "factorisations",
-                  "wall_s",
-                  "final_travel_mm",
-                  "run_end",
-                  "rim_points",
-                  "mean_height_mm",
-                  "min_height_mm",
-                  "max_height_mm",
-                  "amplitude_mm",
-                  "ears_deg",
-                  "valleys_deg",
-                  "mean_minus_measured_mm",
-                  "amplitude_over_measured",
-                  "ear_offset_deg"};
+  table.header = {"run",   "scene",          "overrides", "symmetry",        "divisions",
+                  "steps", "factorisations", "wall_s",    "final_travel_mm", "run_end"};
+  table.header.insert(table.header.end(), kSummaryHeader.begin(), kSummaryHeader.end());
   vs::SvgFigure figure;
   figure.title = "Cup height around the rim: computed profiles and the measured ESAFORM 2021 cup";
   figure.x_label = "angle from the rolling direction [deg]";
@@ -166,13 +201,8 @@ int main(int argc, char** argv) {
       continue;
     }
     const vs::CupProfileSummary& s = report.summary;
-    row.insert(row.end(),
-               {std::to_string(s.points), fmt::format("{:.3f}", s.mean_height_mm),
-                fmt::format("{:.3f}", s.min_height_mm), fmt::format("{:.3f}", s.max_height_mm),
-                fmt::format("{:.3f}", s.amplitude_mm), angles(s.ears), angles(s.valleys),
-                fmt::format("{:+.3f}", s.mean_height_mm - ms.mean_height_mm),
-                fmt::format("{:.3f}", s.amplitude_mm / ms.amplitude_mm),
-                g4(vs::max_extremum_offset_deg(s.ears, ms.ears))});
+    const std::vector<std::string> cells = summary_cells(s, ms);
+    row.insert(row.end(), cells.begin(), cells.end());
     table.add(row);
     write_text(args.study.out_dir + "/" + label + "_cup_profile.csv",
                vs::cup_profile_csv(report.profile));
@@ -187,6 +217,14 @@ int main(int argc, char** argv) {
         k + 1, path, cli_args(overrides), r.steps.size(), r.timings.factorisations, run.wall_s,
         s.mean_height_mm, s.amplitude_mm, angles(s.ears));
   }
+  Table references;
+  try {
+    references = reference_table(args.references, ms, figure);
+  } catch (const vs::InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+  if (!args.references.empty()) figure.series.back().label = "other codes (--reference), dashed";
   vs::PlotSeries m;
   m.label = "measured (ESAFORM 2021, Habraken et al. 2022 Fig. 91)";
   m.colour = 0;
@@ -196,16 +234,22 @@ int main(int argc, char** argv) {
   m.y = measured.height_mm;
   figure.series.push_back(std::move(m));
 
-  write_text(args.study.out_dir + "/earing_study.csv", table.csv());
+  if (!args.scenes.empty()) write_text(args.study.out_dir + "/earing_study.csv", table.csv());
+  if (!args.references.empty())
+    write_text(args.study.out_dir + "/reference_profiles.csv", references.csv());
   const std::string md = fmt::format(
       "# Earing study\n\nMeasured ({}): mean {:.3f} mm, min {:.3f} mm, max {:.3f} mm, amplitude "
       "{:.3f} mm, ears at {} deg, valleys at {} deg.\n\nMachine: {}; load average {} at the "
-      "end.\n\n{}",
+      "end.\n\n{}{}",
       std::filesystem::path(args.measured).filename().string(), ms.mean_height_mm, ms.min_height_mm,
       ms.max_height_mm, ms.amplitude_mm, angles(ms.ears), angles(ms.valleys), machine_description(),
-      load_average(), table.markdown());
+      load_average(), args.scenes.empty() ? std::string() : table.markdown(),
+      args.references.empty()
+          ? std::string()
+          : "\n## Reference profiles (other codes)\n\n" + references.markdown());
   write_text(args.study.out_dir + "/earing_study.md", md);
   vs::write_svg(figure, args.study.out_dir + "/earing_profiles.svg");
-  std::cout << table.text();
+  if (!args.scenes.empty()) std::cout << table.text();
+  if (!args.references.empty()) std::cout << references.text();
   return failures == 0 ? 0 : 1;
 }

@@ -105,13 +105,20 @@ CupProfilePoints read_cup_profile_file(const std::string& path) {
     if (!std::isfinite(height)) {
       fail_line(path, line_number, fmt::format("height {} mm is not finite", height));
     }
+    // A point repeated with its height (modulo 360: 0 and 360 deg closing the curve, quarter
+    // profiles joined at 90, 180, 270 deg in the benchmark participants' files) is read once.
+    bool repeated = false;
     for (std::size_t k = 0; k < out.angle_deg.size(); ++k) {
-      if (std::fmod(out.angle_deg[k], 360.0) == std::fmod(angle, 360.0)) {
-        fail_line(
-            path, line_number,
-            fmt::format("angle {} deg repeats the angle of line {} (modulo 360)", angle, lines[k]));
+      if (std::fmod(out.angle_deg[k], 360.0) != std::fmod(angle, 360.0)) continue;
+      if (out.height_mm[k] != height) {
+        fail_line(path, line_number,
+                  fmt::format("angle {} deg repeats the angle of line {} (modulo 360) with another "
+                              "height ({} vs {} mm)",
+                              angle, lines[k], height, out.height_mm[k]));
       }
+      repeated = true;
     }
+    if (repeated) continue;
     out.angle_deg.push_back(angle);
     out.height_mm.push_back(height);
     lines.push_back(line_number);

@@ -18,7 +18,9 @@ struct CupProfilePoints {
 // "0.480331, 34.515"). A first line starting with a letter is a header; it must start with
 // "angle_from_rd_deg,cup_height_mm" and may name more columns (a run's cup_profile.csv), which
 // every row must then have and which are ignored. Angles lie in [0, 360] and do not repeat modulo
-// 360; at least 3 points. Any malformed line raises InputError "FILE:LINE: message".
+// 360 with another height; a point repeated with the same height (0 and 360 deg closing the curve,
+// quarters joined at 90 deg, as in the benchmark participants' files) is read once; at least 3
+// points. Any malformed line raises InputError "FILE:LINE: message".
 CupProfilePoints read_cup_profile_file(const std::string& path);
 
 }  // namespace vs

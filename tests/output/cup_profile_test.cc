@@ -370,8 +370,21 @@ TEST(MeasuredCupProfile, MalformedFilesGiveOneLineNamingFileAndLine) {
             "profile.txt:2: expected 2 values (angle_deg, height_mm), got '90, 35, 1'");
   EXPECT_EQ(profile_error("0, 34\n# gap\n400, 35\n180, 34\n"),
             "profile.txt:3: angle 400 deg is outside [0, 360]");
+  EXPECT_EQ(profile_error("0, 34\n90, 35\n360.5, 34\n"),
+            "profile.txt:3: angle 360.5 deg is outside [0, 360]");
+  EXPECT_EQ(profile_error("10, 34\n90, 35\n370, 34\n"),
+            "profile.txt:3: angle 370 deg is outside [0, 360]");
+  EXPECT_EQ(profile_error("0, 34\n90, 35\n180, 33\n360, 35\n"),
+            "profile.txt:4: angle 360 deg repeats the angle of line 1 (modulo 360) with another "
+            "height (35 vs 34 mm)");
+  EXPECT_EQ(profile_error("0, 34\n90, 35\n90, 34\n"),
+            "profile.txt:3: angle 90 deg repeats the angle of line 2 (modulo 360) with another "
+            "height (34 vs 35 mm)");
+  // A closed curve (0 and 360 deg with one height) and quarters joined at 90 deg (the benchmark
+  // participants' files) are read once: the repeated points do not count towards three points.
+  EXPECT_EQ(profile_error("0, 34\n90, 35\n90, 35\n180, 33\n360, 34\n"), "read");
   EXPECT_EQ(profile_error("0, 34\n90, 35\n360, 34\n"),
-            "profile.txt:3: angle 360 deg repeats the angle of line 1 (modulo 360)");
+            "profile.txt:3: a cup profile needs at least 3 points, got 2");
   EXPECT_EQ(profile_error("0, 34\n90, nan\n180, 34\n"),
             "profile.txt:2: height nan mm is not finite");
   EXPECT_EQ(profile_error("0, 34\n90, 35\n"),
