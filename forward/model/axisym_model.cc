@@ -8,6 +8,7 @@
 
 #include "contact/coulomb.h"
 #include "core/error.h"
+#include "model/ironing.h"
 
 namespace vs {
 
@@ -689,10 +690,11 @@ void AxisymModel::add_squeeze(const AxisymState& s, const Eigen::VectorXd& v, bo
     // demanded at ~100x the flow rate; the penalty pressure then carried the punch load, pulled
     // the sheet off the punch nose and released seven nodes at once (measured: ESAFORM cup, gap
     // 1.04 mm, Swift UA, friction 0.05, stopped at 37.02 mm).
-    const double log_ratio =
-        std::min(std::log(s.thickness[e] / gap), scene_.numerics.max_strain_increment);
+    // The log target of model/ironing.h, without its tolerance (measured there).
     const double slow_down = step_dt_ / std::max(step_dt_, squeeze_correction_s_);
-    out->squeeze_pressure[e] = area_rate_penalty(s, v, e, log_ratio * slow_down, want_k, out);
+    const double target = ironing_log_target(s.thickness[e], gap,
+                                             scene_.numerics.max_strain_increment, slow_down, 0.0);
+    out->squeeze_pressure[e] = area_rate_penalty(s, v, e, target, want_k, out);
   }
 }
 

@@ -168,6 +168,55 @@ void FormingModel::update_holder(FormingState* s) const {
   }
 }
 
+void FormingModel::update_squeezed(FormingState* s) const {
+  for (int i = 0; i < num_nodes(); ++i) {
+    NodeContact3& c = s->contact[static_cast<std::size_t>(i)];
+    const int before = c.squeeze_tool;
+    c.squeeze_tool = -1;
+    c.clearance_mm = 0.0;
+    if (c.tool < 0 || c.sandwiched || in_gap(c) ||
+        tools_[static_cast<std::size_t>(c.tool)].kind() == ToolKind::kBlankHolder) {
+      c.squeeze_force_N = 0.0;
+      continue;
+    }
+    const double h = s->thickness[static_cast<std::size_t>(i)];
+    for (std::size_t t = 0; t < tools_.size(); ++t) {
+      if (static_cast<int>(t) == c.tool || tools_[t].kind() == ToolKind::kBlankHolder) continue;
+      const double gap =
+          project(static_cast<int>(t), s->x[static_cast<std::size_t>(i)], h, on_axis(i)).gap;
+      if (gap > 0.01 * h) continue;
+      c.squeeze_tool = static_cast<int>(t);
+      c.clearance_mm = h + gap;
+      break;
+    }
+    if (c.squeeze_tool != before) c.squeeze_force_N = 0.0;
+  }
+}
+
+void FormingModel::update_squeeze_forces(const Eigen::VectorXd& x, FormingState* s) const {
+  if (squeeze_.empty()) {
+    for (NodeContact3& c : s->contact) c.squeeze_force_N = 0.0;
+    return;
+  }
+  const std::vector<double> f =
+      squeeze_.nodal_forces(num_nodes(), [&](int e) { return assembler_->gather(e, x); });
+  for (int i = 0; i < num_nodes(); ++i) {
+    NodeContact3& c = s->contact[static_cast<std::size_t>(i)];
+    c.squeeze_force_N = c.squeeze_tool >= 0 ? f[static_cast<std::size_t>(i)] : 0.0;
+  }
+}
+
+double FormingModel::squeeze_punch_friction_z() const {
+  double fz = 0.0;
+  for (const FrictionTerm& t : friction_.terms) {
+    if (t.other_face_tool < 0) continue;
+    const double z = (frame_[static_cast<std::size_t>(t.node)].leftCols<2>() * t.force).z();
+    if (t.other_face_tool == punch_) fz -= z;  // the punch's friction on the node's other face
+    if (last_contact_tool_[static_cast<std::size_t>(t.node)] == punch_) fz += z;
+  }
+  return fz * symmetry_factor();
+}
+
 FormingState FormingModel::initial_state() const {
   FormingState s;
   s.x = mesh_.nodes;
@@ -196,7 +245,7 @@ void FormingModel::freeze_face_pressures(const FormingState& s) {
     const double dir = c.normal.dot(s.director[static_cast<std::size_t>(i)]);
     FacePressure& f = face_pressure_[static_cast<std::size_t>(i)];
     add_face_pressure(dir, std::max(c.normal_force_N, 0.0) / a, &f);
-    add_face_pressure(-dir, std::max(c.holder_force_N, 0.0) / a, &f);
+    add_face_pressure(-dir, std::max(c.holder_force_N + c.squeeze_force_N, 0.0) / a, &f);
   }
 }
 
@@ -351,6 +400,29 @@ void FormingModel::prepare(const FormingState& s) {
     in.gap_mm = holder_gap_;
     in.dt_s = step_dt_;
     gap_.prepare(in);
+  }
+  {
+    // Ironing (update_squeezed): the squeezed nodes' thickness held at their clearances.
+    std::vector<char> squeezed(static_cast<std::size_t>(nn), 0);
+    std::vector<double> clearance(static_cast<std::size_t>(nn), 0.0);
+    for (int i = 0; i < nn; ++i) {
+      const NodeContact3& c = s.contact[static_cast<std::size_t>(i)];
+      if (c.squeeze_tool < 0) continue;
+      squeezed[static_cast<std::size_t>(i)] = 1;
+      clearance[static_cast<std::size_t>(i)] = c.clearance_mm;
+    }
+    GapHolderInput in;
+    in.mesh = &mesh_;
+    in.x = &s.x;
+    in.thickness = &s.thickness;
+    in.in_gap = &squeezed;
+    in.frame = &frame_;
+    in.viscosity = &shear_viscosity_;
+    in.dt_s = step_dt_;
+    in.node_gap = &clearance;
+    in.max_log_ratio = scene_.numerics.max_strain_increment;
+    in.correction = step_dt_ > 0.0 ? step_dt_ / std::max(step_dt_, squeeze_correction_s_) : 1.0;
+    squeeze_.prepare(in);
   }
   coupling_k_.clear();
   if (coupling_) {
@@ -545,6 +617,9 @@ double FormingModel::friction_limit(const NodeContact3& c) const {
   // under its share of the holder force (as AxisymModel::friction_terms).
   double limit = tools_[c.tool].friction() * std::max(c.normal_force_N, 0.0);
   if (c.on_die_face) limit += holder_friction_ * c.holder_force_N;
+  // Squeezed (ironing): the second tool's pressure presses the node against this tool too (the
+  // penalty's pressure is internal, so the lagged reaction of this tool does not carry it).
+  if (c.squeeze_tool >= 0) limit += tools_[c.tool].friction() * c.squeeze_force_N;
   // Fixed-gap holder: a node on the holder's face has the die face's friction on the other side;
   // a sandwiched node's pull on the face it touches is the other face pushing, with that face's
   // friction (AxisymModel::friction_terms).
@@ -584,17 +659,14 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
   friction_.theta = theta;
   friction_.kind = kind;
   const double v0 = friction_velocity_;
-  for (int i = 0; i < num_nodes(); ++i) {
-    const NodeContact3& c = s.contact[i];
-    if (c.tool < 0) continue;
-    const RigidTool& tool = tools_[c.tool];
-    if (tool.sticking()) continue;
-    const double limit = friction_limit(c);
-    if (limit == 0.0) continue;
+  // One Coulomb term of node i against a face of tool `tool` sliding with it (limit [N]).
+  auto term = [&](int i, const RigidTool& tool, double limit, int other_face_tool) {
     const Mat3& Q = frame_[i];
     const Vec3 w(0.0, 0.0, tool.velocity().y());
     FrictionTerm t;
     t.dof = model_->dof(i, 0);
+    t.node = i;
+    t.other_face_tool = other_face_tool;
     const Eigen::Vector2d slip(x(t.dof) - w.dot(Q.col(0)), x(t.dof + 1) - w.dot(Q.col(1)));
     const double v = slip.norm();
     const CoulombTerms law = regularised_coulomb(limit, v, v0);
@@ -610,6 +682,26 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     }
     add(t, 1.0);
     friction_.terms.push_back(t);
+  };
+  last_contact_tool_.resize(static_cast<std::size_t>(num_nodes()));
+  for (int i = 0; i < num_nodes(); ++i) {
+    const NodeContact3& c = s.contact[i];
+    last_contact_tool_[static_cast<std::size_t>(i)] = c.tool;
+    if (c.tool < 0) continue;
+    const RigidTool& tool = tools_[c.tool];
+    if (!tool.sticking()) {
+      const double limit = friction_limit(c);
+      if (limit != 0.0) term(i, tool, limit, -1);
+    }
+    // Ironing: the second tool's friction on the squeeze force, against its own motion (a
+    // sticking second tool holds the face with the largest friction the force allows: left out,
+    // as the axisymmetric model).
+    if (c.squeeze_tool >= 0 && c.squeeze_force_N > 0.0) {
+      const RigidTool& other = tools_[static_cast<std::size_t>(c.squeeze_tool)];
+      if (!other.sticking() && other.friction() > 0.0) {
+        term(i, other, other.friction() * c.squeeze_force_N, c.squeeze_tool);
+      }
+    }
   }
 }
 
@@ -694,6 +786,7 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
   const ElementKernel kernel = [&](int e, const Eigen::VectorXd& qe, ElementContribution* c) {
     element_kernel(s, e, qe, kind, theta, c);
     if (fixed_gap_holder()) gap_.add(e, qe, want, c);
+    if (!squeeze_.empty()) squeeze_.add(e, qe, want, c);
   };
   const bool dual = kind == Shell9Stiffness::kTangent;
   if (dual) dual_prepare(x);

@@ -55,6 +55,12 @@ struct NodeContact3 {
   double holder_force_N = 0.0;
   // Fixed-gap holder: in the gap with its thickness filling it (update_holder; gap_holder3.h).
   bool sandwiched = false;
+  // Ironing (update_squeezed): the second tool whose surface the node's other face reaches
+  // (-1: none), the clearance between the two tools through the node [mm], and the squeeze
+  // pressure's nodal force of the last converged state [N] (meshed part), exerted by that tool.
+  int squeeze_tool = -1;
+  double clearance_mm = 0.0;
+  double squeeze_force_N = 0.0;
 };
 
 // Everything that changes from step to step.
@@ -147,6 +153,27 @@ class FormingModel {
   // Fixed-gap holder: keeps the nodal forces of the nodes in the gap (update_gap_holder_forces),
   // zeroes the others, and marks the sandwiched nodes.
   void update_holder(FormingState* s) const;
+  // Ironing between two tools (as AxisymModel::update_squeezed / add_squeeze): a node touching
+  // tool A (not a blank holder, not sandwiched in a fixed gap) is squeezed when its other face
+  // comes within 1 % of its thickness of a second tool B (not a blank holder); the clearance
+  // through it is h + its gap to B. The squeezed nodes' thickness is held at the clearance by
+  // the penalty of gap_holder3.h in its ironing form (an overshoot is ironed out over steps), B
+  // presses the other face with the squeeze pressure's nodal force (lagged one converged state,
+  // update_squeeze_forces) and adds its Coulomb friction on that force, relative to B's motion.
+  // Resets squeeze_force_N where the squeezing tool changed.
+  void update_squeezed(FormingState* s) const;
+  // The nodal squeeze forces of local velocities x (after prepare(s)) into the squeezed nodes of
+  // s, for the next solve.
+  void update_squeeze_forces(const Eigen::VectorXd& x, FormingState* s) const;
+  // The time over which an overshoot of the clearance is ironed out: a regular (grid) step's, so
+  // that a node squeezed at a short contact-event step is not ironed at a multiple of the flow
+  // rate (the axisymmetric model's measured failure; set by the driver).
+  void set_squeeze_correction_time(double seconds) { squeeze_correction_s_ = seconds; }
+  // The punch's share of the friction on the second face of the squeezed nodes in the last
+  // evaluate(), z component, whole blank [N]: the reaction of a node on the punch includes the
+  // other tool's friction (to be removed), and a node pressed by the punch on its other face
+  // carries the punch's friction (to be added). FormingStepProblem::finish adds it.
+  double squeeze_punch_friction_z() const;
   // Nodes whose boundary condition (blank.edge) forbids contact (pinned / clamped edge).
   bool contact_eligible(int node) const { return eligible_[node] != 0; }
   // Mesh neighbours (nodes sharing an element), sorted.
@@ -162,7 +189,8 @@ class FormingModel {
   // (NodeContact3::normal_force_N; at the start of a solve the last converged state's) over its
   // lumped area integral N_i dA (the consistent nodal area of a uniform pressure), on the lower
   // face (t = -1) if the tool's normal into the sheet points along the node's director, else on
-  // the upper face; a force holder's share (holder_force_N) presses the other face. The element
+  // the upper face; a force holder's share (holder_force_N) and a squeezing tool's force
+  // (squeeze_force_N) press the other face. The element
   // interpolates the nodal pressures to its in-plane points with its shape functions.
   void freeze_face_pressures(const FormingState& s);
   // Nodal face pressures (empty: plane stress).
@@ -292,6 +320,8 @@ class FormingModel {
   double holder_gap_ = 0.0;  // [mm]; 0: no fixed-gap holder
   double step_dt_ = 0.0;     // step the frozen material data are for [s] (freeze_material)
   GapHolder3 gap_;           // the fixed-gap holder's constraints of the prepared state
+  GapHolder3 squeeze_;       // the ironing constraints of the prepared state
+  double squeeze_correction_s_ = 0.0;
   double nominal_rate_ = 1.0;
   double friction_velocity_ = 1e-4;
   double hardening_theta_ = 0.5;
@@ -308,6 +338,8 @@ class FormingModel {
   // The friction terms of the last evaluate() (refresh_friction), per node in contact.
   struct FrictionTerm {
     int dof = 0;  // first tangential dof
+    int node = 0;
+    int other_face_tool = -1;  // a squeezed node's second face: that tool (-1: its contact tool)
     Eigen::Vector2d force = Eigen::Vector2d::Zero();
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
     double potential = 0.0;
@@ -319,6 +351,7 @@ class FormingModel {
     Shell9Stiffness kind = Shell9Stiffness::kNone;
   };
   FrictionRecord friction_;
+  std::vector<int> last_contact_tool_;  // per node, the contact tool of the last friction()
   const GeometryCoupling3* coupling_ = nullptr;
   // Per prepare().
   std::vector<Shell9Operators> operators_;               // per element

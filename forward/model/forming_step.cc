@@ -94,6 +94,8 @@ void FormingStepProblem::finish(const Eigen::VectorXd& x) {
     punch_force_ += (model_.frame(i) * reaction.segment<3>(m.dof(i, 0))).z();
   }
   punch_force_ *= model_.symmetry_factor();
+  // Ironing: a squeezed node's reaction also carries the friction of its second face.
+  punch_force_ += model_.squeeze_punch_friction_z();
   model_.point_rates(*state_, x, &rates_, &membrane_);
   max_rate_ = 0.0;
   for (const auto& r : rates_)

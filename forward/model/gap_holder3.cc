@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "element/lagrange9.h"
 #include "element/quadrature.h"
+#include "model/ironing.h"
 
 namespace vs::shell3d {
 
@@ -60,7 +62,8 @@ void GapHolder3::prepare(const GapHolderInput& in) {
   constraints_.assign(static_cast<std::size_t>(ne), {});
   gap_nodes_.assign(static_cast<std::size_t>(ne), {});
   constrained_elements_ = 0;
-  if (!(in.dt_s > 0.0) || !(in.gap_mm > 0.0)) return;
+  const bool ironing = in.node_gap != nullptr;
+  if (!(in.dt_s > 0.0) || !(ironing || in.gap_mm > 0.0)) return;
   for (int e = 0; e < ne; ++e) {
     const std::size_t ue = static_cast<std::size_t>(e);
     const auto& conn = in.mesh->elements[ue];
@@ -71,6 +74,19 @@ void GapHolder3::prepare(const GapHolderInput& in) {
       any = any || g != 0;
     }
     if (!any) continue;
+    double gap = in.gap_mm;
+    if (ironing) {
+      gap = std::numeric_limits<double>::infinity();
+      for (std::size_t a = 0; a < 9; ++a) {
+        if (gap_nodes_[ue][a] != 0) {
+          gap = std::min(gap, (*in.node_gap)[static_cast<std::size_t>(conn[a])]);
+        }
+      }
+    }
+    if (!(gap > 0.0) || !std::isfinite(gap)) {
+      gap_nodes_[ue] = {};
+      continue;
+    }
     ++constrained_elements_;
     std::array<Vec3, 9> xe;
     for (std::size_t a = 0; a < 9; ++a) xe[a] = (*in.x)[static_cast<std::size_t>(conn[a])];
@@ -86,7 +102,9 @@ void GapHolder3::prepare(const GapHolderInput& in) {
       const Eigen::Matrix<double, 9, 3> bg = surface_divergence(xe, rs[0], rs[1]);
       Constraint c;
       c.local = a;
-      c.rate_bound = std::min(0.0, std::log(h / in.gap_mm)) / in.dt_s;
+      c.rate_bound = (ironing ? ironing_log_target(h, gap, in.max_log_ratio, in.correction, 0.0)
+                              : std::min(0.0, std::log(h / gap))) /
+                     in.dt_s;
       c.penalty = k;
       c.area = area[ua];
       c.stiffness = k * h * area[ua];

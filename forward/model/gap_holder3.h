@@ -88,6 +88,16 @@ struct GapHolderInput {
   const std::vector<double>* viscosity = nullptr;  // per element reference viscosity [MPa s]
   double gap_mm = 0.0;
   double dt_s = 0.0;  // the step the constraint is for
+  // Ironing between two tools (FormingModel::update_squeezed; AxisymModel::add_squeeze): each
+  // node in the gap has its own clearance (node_gap, per node [mm]; an element's gap is the
+  // smallest of its nodes in the gap), and an overshoot h > g is corrected: the bound is
+  //   c = ironing_log_target(h, g, max_log_ratio, correction) / dt   (model/ironing.h)
+  // instead of min(ln(h / g), 0) / dt, as the axisymmetric model: max_log_ratio (the strain cap
+  // of a step) and correction (dt / the time of a regular step, <= 1) spread the correction of
+  // an overshoot over steps. Null / 0: the fixed-gap holder.
+  const std::vector<double>* node_gap = nullptr;
+  double max_log_ratio = 0.0;
+  double correction = 1.0;
 };
 
 class GapHolder3 {

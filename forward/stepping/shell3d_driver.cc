@@ -86,6 +86,8 @@ class Shell3dStepper {
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
     nl_.verbose = options.verbose;
+    nl_.force_floor = newton_force_floor(driver, model_.hardening().curve_stress(0.0),
+                                         scene.blank.thickness_mm, scene.blank.radius_mm);
     // Assembly costs more than a potential here: the full Newton step is evaluated completely.
     // Chord steps: measured on ex4a (n = 4, punch friction 0.2, 10 mm, speed setting):
     // factorisations 572 -> 280 with the same answers; the Newton tail of the regularised
@@ -110,7 +112,16 @@ class Shell3dStepper {
   // the old 0.5 mm grid, 0.31 % at 0.05 element sizes, 0.18 % at the default 0.025
   // (experiments/05_shell3d).
   double shortest_element_mm() const { return shortest_element_size(model_); }
-  void set_grid_increment(double mm) { grid_increment_mm_ = mm; }
+  void set_grid_increment(double mm) {
+    grid_increment_mm_ = mm;
+    // As the axisymmetric stepper: an overshoot of the ironing clearance is removed over a grid
+    // step, asked in theta of the step with the implicit update (it moves the geometry with
+    // theta of the end-of-step rate).
+    const double theta = scene_.numerics.time_integration == TimeIntegration::kImplicit
+                             ? scene_.numerics.implicit_theta
+                             : 1.0;
+    model_.set_squeeze_correction_time(theta * mm / scene_.process.punch_speed_mm_per_s);
+  }
   FormingState initial_state() const { return model_.initial_state(); }
   void place_tools(const FormingState& s) { model_.place_tools(s); }
   void maintain_contacts(FormingState& s, const ContactHolds& holds);
@@ -175,9 +186,14 @@ void Shell3dStepper::attach(FormingState& s, int node, int tool) const {
   const auto p = model_.project(tool, s.x[node], s.thickness[node], model_.on_axis(node));
   NodeContact3& c = s.contact[node];
   const double keep = c.tool == tool ? c.normal_force_N : 0.0;
-  const double keep_holder = c.tool == tool ? c.holder_force_N : 0.0;
+  const NodeContact3 before = c;
   c = NodeContact3{};
-  c.holder_force_N = keep_holder;
+  if (before.tool == tool) {  // the holder and squeeze state is kept while the node stays on it
+    c.holder_force_N = before.holder_force_N;
+    c.squeeze_tool = before.squeeze_tool;
+    c.clearance_mm = before.clearance_mm;
+    c.squeeze_force_N = before.squeeze_force_N;
+  }
   c.tool = tool;
   c.normal = p.normal;
   c.normal_force_N = keep;
@@ -235,6 +251,7 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
   constexpr double kStickingPullOff = 0.25;
   for (int round = 0; round < driver_.max_contact_rounds; ++round) {
     model_.update_holder(&s);  // the flange on the die face may have changed (released nodes)
+    model_.update_squeezed(&s);
     const std::vector<char> last_mask = model_.prescribed_mask();
     model_.prepare(s);
     FormingStepProblem problem(model_, &s, &linear_);
@@ -295,8 +312,10 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
       best_per_tool[tool] = std::max(best_per_tool[tool], smoothed[i]);
       const double threshold = driver_.release_fraction * scale +
                                (model_.tools()[tool].sticking() ? kStickingPullOff * full : 0.0);
-      // A node sandwiched in a fixed gap touches both faces whatever its reaction on one.
-      if (other > 0 && smoothed[i] < -threshold && !s.contact[i].sandwiched) {
+      // A node sandwiched in a fixed gap, or squeezed between two tools, touches both faces
+      // whatever its reaction on one.
+      if (other > 0 && smoothed[i] < -threshold && !s.contact[i].sandwiched &&
+          s.contact[i].squeeze_tool < 0) {
         candidates.push_back(i);
       } else {
         ++kept_per_tool[tool];
@@ -325,6 +344,7 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
       // Fixed-gap holder: the pressure of this converged state sets the holder forces (and so the
       // friction on both flange faces) of the next solve (lagged, as the axisymmetric driver).
       if (model_.fixed_gap_holder()) model_.update_gap_holder_forces(x, &s);
+      model_.update_squeeze_forces(x, &s);  // ironing: lagged the same way
       out->punch_force = problem.punch_force();
       out->max_rate = problem.max_point_rate();
       out->point_rates = problem.point_rates();

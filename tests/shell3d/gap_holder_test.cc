@@ -13,6 +13,7 @@
 #include "common/axisym_comparison.h"
 #include "element/lagrange9.h"
 #include "model/gap_holder3.h"
+#include "model/ironing.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "stepping/shell3d_driver.h"
@@ -235,6 +236,117 @@ TEST(GapHolderPenalty, ANodeOutsideTheGapPassesItsForceToTheNodesInTheGap) {
   for (double v : f_all) total += v;
   for (int a = 0; a < 8; ++a) EXPECT_EQ(f_edge[a], 0.0);
   EXPECT_NEAR(f_edge[8], total, 1e-12 * total);
+}
+
+// --- ironing between two tools (the penalty's ironing form; FormingModel::update_squeezed)
+
+// One flat element squeezed at every node, thickness h, clearance g at node 8 and 1.2 mm
+// elsewhere (the element's gap is the smallest), overshoot cap and correction as given.
+struct OneIronedElement {
+  ShellMesh mesh;
+  std::vector<Vec3> x;
+  std::vector<double> thickness, viscosity{2.0}, clearance;
+  std::vector<char> squeezed;
+  std::vector<Mat3> frame;
+  GapHolder3 penalty;
+  OneIronedElement(double h, double g, double dt, double cap, double correction) {
+    const std::array<Vec3, 9> xe = curved_element();
+    mesh.elements.push_back({0, 1, 2, 3, 4, 5, 6, 7, 8});
+    for (const Vec3& p : xe) {
+      mesh.nodes.push_back(Vec3(p.x(), p.y(), 0.0));
+      x.push_back(mesh.nodes.back());
+      frame.push_back(Mat3::Identity());
+    }
+    thickness.assign(9, h);
+    clearance.assign(9, 1.2);
+    clearance[8] = g;
+    squeezed.assign(9, 1);
+    GapHolderInput in;
+    in.mesh = &mesh;
+    in.x = &x;
+    in.thickness = &thickness;
+    in.in_gap = &squeezed;
+    in.frame = &frame;
+    in.viscosity = &viscosity;
+    in.dt_s = dt;
+    in.node_gap = &clearance;
+    in.max_log_ratio = cap;
+    in.correction = correction;
+    penalty.prepare(in);
+  }
+  // Total squeeze force under the uniform in-plane stretch v = c (x, y, 0) (area rate 2 c).
+  double force(double c) const {
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(45);
+    for (int a = 0; a < 9; ++a) q.segment<3>(5 * a) = c * Vec3(x[a].x(), x[a].y(), 0.0);
+    double total = 0.0;
+    for (double f : penalty.nodal_forces(9, [&](int) { return q; })) total += f;
+    return total;
+  }
+};
+
+TEST(IroningPenalty, AnOvershootIsIronedAtTheCappedAndCorrectedRate) {
+  // h = 1.25 in a clearance g = 1.15 (the smallest of the element's, 1.2 elsewhere): the area
+  // rate must reach c = min(ln(h / g), cap) correction / dt, and the penalty pushes with
+  // k (c - 2 c0) on every node's volume below it: zero force just above, a force just below.
+  const double h = 1.25, g = 1.15, dt = 0.05;
+  const double log_ratio = std::log(h / g);  // 0.0834
+  struct Case {
+    double cap, correction;
+  };
+  for (const Case& k : {Case{1.0, 1.0}, Case{0.05, 1.0}, Case{0.05, 0.25}, Case{1.0, 0.5}}) {
+    const OneIronedElement one(h, g, dt, k.cap, k.correction);
+    ASSERT_FALSE(one.penalty.empty());
+    const double bound = std::min(log_ratio, k.cap) * k.correction / dt;
+    EXPECT_EQ(one.force(0.5 * bound * 1.001), 0.0) << k.cap << " " << k.correction;
+    EXPECT_GT(one.force(0.5 * bound * 0.999), 0.0) << k.cap << " " << k.correction;
+    // Linear in the violation: k V (bound - 2 c) summed, with V = h times the element's area.
+    const double f1 = one.force(0.25 * bound), f2 = one.force(0.0);
+    EXPECT_NEAR(f2 / f1, 2.0, 1e-9);
+  }
+  // A node below its clearance (h < g): thickening is allowed up to ln(g / h) over the step, as
+  // the fixed-gap holder; thinning is never resisted.
+  const OneIronedElement thin(1.1, 1.15, dt, 1.0, 1.0);
+  const double allowed = (std::log(1.1 / 1.15) - kIroningSlack) / dt;  // < 0
+  EXPECT_EQ(thin.force(0.5 * allowed * 0.999), 0.0);
+  EXPECT_GT(thin.force(0.5 * allowed * 1.001), 0.0);
+  EXPECT_EQ(thin.force(1.0), 0.0);
+}
+
+TEST(IroningTarget, CorrectsAnOvershootBeyondTheToleranceOnly) {
+  // Below the clearance: thickening up to it over the step (unscaled); at it and within the
+  // tolerance above it: only kept from thickening.
+  EXPECT_DOUBLE_EQ(ironing_log_target(1.1, 1.2, 0.05, 0.5, kIroningTolerance),
+                   std::log(1.1 / 1.2) - kIroningSlack);
+  EXPECT_EQ(ironing_log_target(1.2, 1.2, 0.05, 0.5, kIroningTolerance), -kIroningSlack);
+  const double inside = 1.2 * (1.0 + 0.5 * kIroningTolerance);
+  EXPECT_EQ(ironing_log_target(inside, 1.2, 0.05, 0.5, kIroningTolerance), -kIroningSlack);
+  EXPECT_LT(kIroningSlack, 1e-3 * kIroningTolerance);
+  // Beyond it: the whole overshoot, capped, times the correction.
+  const double h = 1.2 * (1.0 + 2.0 * kIroningTolerance);
+  EXPECT_DOUBLE_EQ(ironing_log_target(h, 1.2, 0.05, 0.5, kIroningTolerance),
+                   0.5 * std::log(h / 1.2));
+  EXPECT_DOUBLE_EQ(ironing_log_target(1.4, 1.2, 0.05, 0.5, kIroningTolerance), 0.5 * 0.05);
+  // Tolerance 0 (the axisymmetric model): min(ln(h / g), cap) correction everywhere.
+  EXPECT_DOUBLE_EQ(ironing_log_target(1.1, 1.2, 0.05, 0.5, 0.0), 0.5 * std::log(1.1 / 1.2));
+  EXPECT_DOUBLE_EQ(ironing_log_target(1.21, 1.2, 0.05, 0.5, 0.0), 0.5 * std::log(1.21 / 1.2));
+}
+
+TEST(IroningPenalty, NoSqueezedNodeNoConstraint) {
+  OneIronedElement one(1.25, 1.15, 0.05, 1.0, 1.0);
+  one.squeezed.assign(9, 0);
+  GapHolderInput in;
+  in.mesh = &one.mesh;
+  in.x = &one.x;
+  in.thickness = &one.thickness;
+  in.in_gap = &one.squeezed;
+  in.frame = &one.frame;
+  in.viscosity = &one.viscosity;
+  in.dt_s = 0.05;
+  in.node_gap = &one.clearance;
+  in.max_log_ratio = 1.0;
+  one.penalty.prepare(in);
+  EXPECT_TRUE(one.penalty.empty());
+  EXPECT_EQ(one.force(-1.0), 0.0);
 }
 
 // --- the ESAFORM cup, quarter blank, a few mm
