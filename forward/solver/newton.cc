@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,6 +43,7 @@ bool NewtonOptions::IsValid(std::string* why) const {
   if (!(chord_start >= 0.0 && chord_start < 1.0)) return fail("chord_start must be in [0, 1)");
   if (!(chord_contraction > 0.0 && chord_contraction < 1.0))
     return fail("chord_contraction must be in (0, 1)");
+  if (!(force_floor >= 0.0)) return fail("force_floor must be >= 0");
   return true;
 }
 
@@ -133,7 +135,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     if (newton_allowed && it == picard_before_newton + 1) theta = initial_theta;
     if (chord) {
       chord = false;
-      sum.residual_norm = relative(r.norm(), eval_scale);
+      sum.residual_norm = relative(r.norm(), std::max(eval_scale, options.force_floor));
       solve();
       const double slope = r.dot(dx);
       bool ok =
@@ -175,7 +177,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       sum.message = "residual is not finite";
       return sum;
     }
-    sum.residual_norm = relative(r.norm(), scale);
+    sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
     const bool factored = factorize();
     if (factored)
       sum.condition_estimate = std::max(sum.condition_estimate, linear.condition_estimate());
@@ -241,7 +243,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       // Direct iteration: always SPD and monotone in the potential (Kacanov).
       if (used_theta > 0.0) {
         scale = evaluate(0.0);
-        sum.residual_norm = relative(r.norm(), scale);
+        sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
         if (!factorize()) {
           sum.message = "secant matrix is not positive definite";
           return sum;

@@ -88,6 +88,11 @@ struct NewtonOptions {
   double chord_start = 0.0;           // 0: no chord steps
   double chord_contraction = 0.5;
   bool verbose = false;  // iteration table on stderr
+  // Absolute floor of the residual's scale [N]: ||r|| is measured against
+  // max(||f_internal||, force_floor). A sheet that moves rigidly (a cup drawn through the die,
+  // nothing left to deform) has internal forces at round-off, and round-off over round-off never
+  // converges (measured: a drawn cup stalled at |dx|/|x| = 3e-17, |r|/|f| = 0.999).
+  double force_floor = 0.0;
 
   // False with the reason if an option is out of its range.
   bool IsValid(std::string* why) const;

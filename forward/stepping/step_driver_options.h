@@ -44,10 +44,22 @@ struct StepDriverOptions {
   // elements, 0.25 element lengths per step): a third solve moves the force by <= 0.005 % and
   // the smallest thickness by 4e-5 mm, for 47 % more factorisations.
   int implicit_solves = 2;
+  // The Newton residual's absolute floor (NewtonOptions::force_floor) as a fraction of the
+  // sheet's characteristic force sigma_y(0) h0 R (initial yield stress, thickness, blank
+  // radius): far below any load the sheet carries while it deforms, far above the round-off of a
+  // sheet that only moves rigidly.
+  double residual_force_floor = 1e-9;
 
   // False with the reason if an option is out of range.
   bool IsValid(std::string* why) const;
 };
+
+// NewtonOptions::force_floor [N] for a sheet with initial yield stress sigma_y0, thickness h0
+// and blank radius R: options.residual_force_floor sigma_y0 h0 R.
+inline double newton_force_floor(const StepDriverOptions& options, double sigma_y0_MPa,
+                                 double h0_mm, double radius_mm) {
+  return options.residual_force_floor * sigma_y0_MPa * h0_mm * radius_mm;
+}
 
 // Why a thickness h outside the limits of `options` (relative to h0) stops a run: "the mesh is
 // folding onto itself" above them; below them "the sheet has necked through (fracture)", unless
