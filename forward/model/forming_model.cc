@@ -387,43 +387,39 @@ void FormingModel::prepare(const FormingState& s) {
   for (int e = 0; e < ne; ++e) {
     shell9_operators(geometry(s, e), rule_, thick_, &operators_[static_cast<std::size_t>(e)]);
   }
+  // The penalties on the area rate (gap_holder3.h) of the state's configuration: the fixed-gap
+  // holder's flange, and the squeezed nodes' ironing (update_squeezed).
+  auto area_rate_input = [&](const std::vector<char>& flags) {
+    GapHolderInput in;
+    in.mesh = &mesh_;
+    in.x = &s.x;
+    in.thickness = &s.thickness;
+    in.in_gap = &flags;
+    in.frame = &frame_;
+    in.viscosity = &shear_viscosity_;
+    in.dt_s = step_dt_;
+    return in;
+  };
   if (fixed_gap_holder()) {
     std::vector<char> gap(static_cast<std::size_t>(nn), 0);
     for (int i = 0; i < nn; ++i) gap[static_cast<std::size_t>(i)] = in_gap(s.contact[i]) ? 1 : 0;
-    GapHolderInput in;
-    in.mesh = &mesh_;
-    in.x = &s.x;
-    in.thickness = &s.thickness;
-    in.in_gap = &gap;
-    in.frame = &frame_;
-    in.viscosity = &shear_viscosity_;
+    GapHolderInput in = area_rate_input(gap);
     in.gap_mm = holder_gap_;
-    in.dt_s = step_dt_;
     gap_.prepare(in);
   }
-  {
-    // Ironing (update_squeezed): the squeezed nodes' thickness held at their clearances.
-    std::vector<char> squeezed(static_cast<std::size_t>(nn), 0);
-    std::vector<double> clearance(static_cast<std::size_t>(nn), 0.0);
-    for (int i = 0; i < nn; ++i) {
-      const NodeContact3& c = s.contact[static_cast<std::size_t>(i)];
-      if (c.squeeze_tool < 0) continue;
-      squeezed[static_cast<std::size_t>(i)] = 1;
-      clearance[static_cast<std::size_t>(i)] = c.clearance_mm;
-    }
-    GapHolderInput in;
-    in.mesh = &mesh_;
-    in.x = &s.x;
-    in.thickness = &s.thickness;
-    in.in_gap = &squeezed;
-    in.frame = &frame_;
-    in.viscosity = &shear_viscosity_;
-    in.dt_s = step_dt_;
-    in.node_gap = &clearance;
-    in.max_log_ratio = scene_.numerics.max_strain_increment;
-    in.correction = step_dt_ > 0.0 ? step_dt_ / std::max(step_dt_, squeeze_correction_s_) : 1.0;
-    squeeze_.prepare(in);
+  std::vector<char> squeezed(static_cast<std::size_t>(nn), 0);
+  std::vector<double> clearance(static_cast<std::size_t>(nn), 0.0);
+  for (int i = 0; i < nn; ++i) {
+    const NodeContact3& c = s.contact[static_cast<std::size_t>(i)];
+    if (c.squeeze_tool < 0) continue;
+    squeezed[static_cast<std::size_t>(i)] = 1;
+    clearance[static_cast<std::size_t>(i)] = c.clearance_mm;
   }
+  GapHolderInput iron = area_rate_input(squeezed);
+  iron.node_gap = &clearance;
+  iron.max_log_ratio = scene_.numerics.max_strain_increment;
+  iron.correction = step_dt_ > 0.0 ? step_dt_ / std::max(step_dt_, squeeze_correction_s_) : 1.0;
+  squeeze_.prepare(iron);
   coupling_k_.clear();
   if (coupling_) {
     coupling_k_.resize(static_cast<std::size_t>(ne));

@@ -51,4 +51,13 @@ inline double ironing_log_target(double h, double g, double cap, double correcti
   return std::min(log_ratio, 0.0) - kIroningSlack;
 }
 
+// The time over which a squeezed overshoot is ironed out (the models' squeeze correction time):
+// a regular (grid) step's, so that a node squeezed at a short contact-event step is not ironed
+// at a multiple of the flow rate; with the implicit update theta of it, because that update moves
+// the geometry with theta of the end-of-step rate.
+inline double ironing_correction_time_s(double grid_increment_mm, double punch_speed_mm_per_s,
+                                        double implicit_theta_or_1) {
+  return implicit_theta_or_1 * grid_increment_mm / punch_speed_mm_per_s;
+}
+
 }  // namespace vs

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "model/axisym_model.h"
 #include "model/axisym_problem.h"
+#include "model/ironing.h"
 #include "run/built_components.h"
 #include "run/simulate.h"
 #include "stepping/axisym_observe.h"
@@ -74,13 +75,11 @@ class AxisymStepper {
   }
   void set_grid_increment(double mm) {
     grid_increment_mm_ = mm;
-    // The implicit update moves the geometry with theta of the end-of-step rate: the ironing
-    // constraint on that rate removes an overshoot over a grid step when asked to do so in
-    // theta of the step.
     const double theta = scene_.numerics.time_integration == TimeIntegration::kImplicit
                              ? scene_.numerics.implicit_theta
                              : 1.0;
-    model_.set_squeeze_correction_time(theta * mm / scene_.process.punch_speed_mm_per_s);
+    model_.set_squeeze_correction_time(
+        ironing_correction_time_s(mm, scene_.process.punch_speed_mm_per_s, theta));
   }
   AxisymState initial_state() const { return model_.initial_state(); }
   void place_tools(const AxisymState& s) { model_.place_tools(s); }

@@ -18,6 +18,7 @@
 #include "model/forming_fields.h"
 #include "model/forming_model.h"
 #include "model/forming_step.h"
+#include "model/ironing.h"
 #include "run/built_components.h"
 #include "stepping/step_driver.h"
 #include "stepping/travel_grid.h"
@@ -114,13 +115,11 @@ class Shell3dStepper {
   double shortest_element_mm() const { return shortest_element_size(model_); }
   void set_grid_increment(double mm) {
     grid_increment_mm_ = mm;
-    // As the axisymmetric stepper: an overshoot of the ironing clearance is removed over a grid
-    // step, asked in theta of the step with the implicit update (it moves the geometry with
-    // theta of the end-of-step rate).
     const double theta = scene_.numerics.time_integration == TimeIntegration::kImplicit
                              ? scene_.numerics.implicit_theta
                              : 1.0;
-    model_.set_squeeze_correction_time(theta * mm / scene_.process.punch_speed_mm_per_s);
+    model_.set_squeeze_correction_time(
+        ironing_correction_time_s(mm, scene_.process.punch_speed_mm_per_s, theta));
   }
   FormingState initial_state() const { return model_.initial_state(); }
   void place_tools(const FormingState& s) { model_.place_tools(s); }
