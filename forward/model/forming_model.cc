@@ -212,7 +212,7 @@ double FormingModel::squeeze_punch_friction_z() const {
     if (t.other_face_tool < 0) continue;
     const double z = (frame_[static_cast<std::size_t>(t.node)].leftCols<2>() * t.force).z();
     if (t.other_face_tool == punch_) fz -= z;  // the punch's friction on the node's other face
-    if (last_contact_tool_[static_cast<std::size_t>(t.node)] == punch_) fz += z;
+    if (t.contact_tool == punch_) fz += z;
   }
   return fz * symmetry_factor();
 }
@@ -662,6 +662,7 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     FrictionTerm t;
     t.dof = model_->dof(i, 0);
     t.node = i;
+    t.contact_tool = s.contact[static_cast<std::size_t>(i)].tool;
     t.other_face_tool = other_face_tool;
     const Eigen::Vector2d slip(x(t.dof) - w.dot(Q.col(0)), x(t.dof + 1) - w.dot(Q.col(1)));
     const double v = slip.norm();
@@ -679,10 +680,8 @@ void FormingModel::friction(const FormingState& s, const Eigen::VectorXd& x, boo
     add(t, 1.0);
     friction_.terms.push_back(t);
   };
-  last_contact_tool_.resize(static_cast<std::size_t>(num_nodes()));
   for (int i = 0; i < num_nodes(); ++i) {
     const NodeContact3& c = s.contact[i];
-    last_contact_tool_[static_cast<std::size_t>(i)] = c.tool;
     if (c.tool < 0) continue;
     const RigidTool& tool = tools_[c.tool];
     if (!tool.sticking()) {

@@ -339,6 +339,7 @@ class FormingModel {
   struct FrictionTerm {
     int dof = 0;  // first tangential dof
     int node = 0;
+    int contact_tool = -1;     // the node's contact tool
     int other_face_tool = -1;  // a squeezed node's second face: that tool (-1: its contact tool)
     Eigen::Vector2d force = Eigen::Vector2d::Zero();
     Eigen::Matrix2d stiffness = Eigen::Matrix2d::Zero();
@@ -351,7 +352,6 @@ class FormingModel {
     Shell9Stiffness kind = Shell9Stiffness::kNone;
   };
   FrictionRecord friction_;
-  std::vector<int> last_contact_tool_;  // per node, the contact tool of the last friction()
   const GeometryCoupling3* coupling_ = nullptr;
   // Per prepare().
   std::vector<Shell9Operators> operators_;               // per element

@@ -34,6 +34,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/scene.h"
+
 namespace vs {
 
 inline constexpr double kIroningTolerance = 2e-3;  // relative overshoot left uncorrected
@@ -55,9 +57,11 @@ inline double ironing_log_target(double h, double g, double cap, double correcti
 // a regular (grid) step's, so that a node squeezed at a short contact-event step is not ironed
 // at a multiple of the flow rate; with the implicit update theta of it, because that update moves
 // the geometry with theta of the end-of-step rate.
-inline double ironing_correction_time_s(double grid_increment_mm, double punch_speed_mm_per_s,
-                                        double implicit_theta_or_1) {
-  return implicit_theta_or_1 * grid_increment_mm / punch_speed_mm_per_s;
+inline double ironing_correction_time_s(const Scene& scene, double grid_increment_mm) {
+  const double theta = scene.numerics.time_integration == TimeIntegration::kImplicit
+                           ? scene.numerics.implicit_theta
+                           : 1.0;
+  return theta * grid_increment_mm / scene.process.punch_speed_mm_per_s;
 }
 
 }  // namespace vs

@@ -115,11 +115,7 @@ class Shell3dStepper {
   double shortest_element_mm() const { return shortest_element_size(model_); }
   void set_grid_increment(double mm) {
     grid_increment_mm_ = mm;
-    const double theta = scene_.numerics.time_integration == TimeIntegration::kImplicit
-                             ? scene_.numerics.implicit_theta
-                             : 1.0;
-    model_.set_squeeze_correction_time(
-        ironing_correction_time_s(mm, scene_.process.punch_speed_mm_per_s, theta));
+    model_.set_squeeze_correction_time(ironing_correction_time_s(scene_, mm));
   }
   FormingState initial_state() const { return model_.initial_state(); }
   void place_tools(const FormingState& s) { model_.place_tools(s); }

@@ -48,6 +48,14 @@ std::vector<ReferenceRow> read_reference() {
   return rows;
 }
 
+// The reference row at `travel_mm`, or null.
+const ReferenceRow* row_at(const std::vector<ReferenceRow>& ref, double travel_mm) {
+  for (const ReferenceRow& q : ref) {
+    if (q.travel_mm == travel_mm) return &q;
+  }
+  return nullptr;
+}
+
 // Tolerances: TODAY'S MODEL-FORM GAP, not the goal. The continuum is converged to 0.05 % in force
 // and 0.0006 in thickness strain (README section 3). The shell differs from it by a model-form
 // error (no through-thickness stress, no elasticity): +1.8 % in force at 10-15 mm and 0.0009 /
@@ -155,10 +163,7 @@ TEST(ContinuumReference, Example1Friction01WithNormalStressMeetsTheGoalFrom20mm)
   ASSERT_EQ(on.size(), at.size());
   int compared = 0;
   for (std::size_t k = 0; k < at.size(); ++k) {
-    const ReferenceRow* row = nullptr;
-    for (const ReferenceRow& q : ref) {
-      if (q.travel_mm == at[k]) row = &q;
-    }
+    const ReferenceRow* row = row_at(ref, at[k]);
     ASSERT_NE(row, nullptr) << at[k];
     const double dF = on[k].force_N / row->force_N - 1.0;
     const double dF_off = off[k].force_N / row->force_N - 1.0;
@@ -195,10 +200,7 @@ TEST(ContinuumReference, Example1Friction01WithElasticStartMeetsTheForceGoalFrom
   ASSERT_EQ(on.size(), at.size());
   int compared = 0;
   for (std::size_t k = 0; k < at.size(); ++k) {
-    const ReferenceRow* row = nullptr;
-    for (const ReferenceRow& q : ref) {
-      if (q.travel_mm == at[k]) row = &q;
-    }
+    const ReferenceRow* row = row_at(ref, at[k]);
     ASSERT_NE(row, nullptr) << at[k];
     const double dF = on[k].force_N / row->force_N - 1.0;
     const double de = on[k].eps_t - row->eps_t;
