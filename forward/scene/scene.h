@@ -184,6 +184,9 @@ enum class ShellElementRule {
 struct NumericsSpec {
   int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
+  // A scene file without the key gets the default of its geometry (load_scene.cc,
+  // apply_geometry_defaults): implicit for axisymmetric, heun for shell3d. The struct's own
+  // default is the one for scenes built in code.
   TimeIntegration time_integration = TimeIntegration::kHeun;
   // Weight of the end-of-step velocity in the implicit update x_{n+1} = x_n + dt ((1 - theta)
   // v_n + theta v_{n+1}): 1/2 trapezoidal (second order), 1 backward Euler (first order, damps
@@ -200,7 +203,8 @@ struct NumericsSpec {
   // explicit (Heun) update needs it: above it the deformation mechanism of nearly rigid free
   // regions switches from step to step and outputs jitter by up to 1 %; the implicit update is
   // stable at any step, where this cap is for accuracy only (0.25 is smooth and within 0.2 % in
-  // force on ex1; experiments/06_step_stability).
+  // force on ex1; experiments/06_step_stability). A scene file without the key gets 0.25 with
+  // the implicit update, 0.025 with heun or euler (load_scene.cc, apply_geometry_defaults).
   double max_travel_increment_per_length = 0.025;
   double max_strain_increment = 0.02;     // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius

@@ -100,7 +100,10 @@ void append_defaults_key(std::string& out, const KeySpec& key, bool whole_sectio
   out += fmt::format("# {}\n", key.doc);
   if (!notes.empty()) out += fmt::format("# ({})\n", notes);
   const std::string value = default_toml_text(key);
-  const bool active = !whole_section_commented && !value.empty() && used_by_default_variant(key);
+  // A default in words ("(implicit for axisymmetric, ...)") is not TOML: shown commented out.
+  const bool words = !value.empty() && value.front() == '(';
+  const bool active =
+      !whole_section_commented && !value.empty() && !words && used_by_default_variant(key);
   const std::string shown = !value.empty() ? value : key.required ? "<required>" : "<none>";
   out += fmt::format("{}{} = {}\n\n", active ? "" : "# ", key.name, shown);
 }

@@ -357,7 +357,10 @@ std::vector<KeySpec> build_keys() {
              "end-of-step configuration (two solves per step, with the configuration's dependence "
              "on the velocity), stable at steps set by accuracy: with "
              "max_travel_increment_per_length = 0.25 it runs ex1 about 8x faster than heun at "
-             "its default step, within 0.2 % in force (experiments/06_step_stability)."));
+             "its default step, within 0.2 % in force (experiments/06_step_stability). Default: "
+             "implicit for axisymmetric scenes; heun for shell3d, where the implicit step across "
+             "the first contact events on a coarse grid is less accurate in force."))
+      .default_text = [] { return std::string("(implicit for axisymmetric, heun for shell3d)"); };
   add(make(nu, "implicit_theta", kFloat, float_field<&numerics, &NumericsSpec::implicit_theta>(),
            "", closed(0.5, 1),
            "Implicit update x_{n+1} = x_n + dt ((1 - theta) v_n + theta v_{n+1}): 0.5 trapezoidal "
@@ -392,11 +395,13 @@ std::vector<KeySpec> build_keys() {
            float_field<&numerics, &NumericsSpec::max_travel_increment_per_length>(), "",
            open_above(0),
            "Cap on punch travel per step relative to the shortest initial element length "
-           "(axisymmetric: element length; shell3d: sqrt(area) of the 9-node element). At the "
-           "default, heun outputs are smooth in the parameters to the solver tolerance; from "
+           "(axisymmetric: element length; shell3d: sqrt(area) of the 9-node element). At "
+           "0.025, heun outputs are smooth in the parameters to the solver tolerance; from "
            "about 0.05 the explicit update makes load curves and strains jitter (1e-3 at 0.05 "
            "with 24 elements, up to 1 % at 0.1). The implicit update stays smooth (2e-8 at 0.4; "
-           "experiments/06_step_stability, experiments/05_shell3d)."));
+           "experiments/06_step_stability, experiments/05_shell3d). Default: 0.25 with the "
+           "implicit update (a cap for accuracy), 0.025 with heun or euler (their stability)."))
+      .default_text = [] { return std::string("(0.25 with implicit, 0.025 with heun or euler)"); };
   add(make(nu, "max_strain_increment", kFloat,
            float_field<&numerics, &NumericsSpec::max_strain_increment>(), "", closed(1e-3, 0.5),
            "Cap on the effective strain increment per step (at least 1e-3: a forming run "

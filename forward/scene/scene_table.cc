@@ -153,6 +153,12 @@ double get_scene_number(const toml::table& table, const std::string& address) {
     if (target.key->required) {
       throw InputError(fmt::format("scene address '{}' is not set and has no default", address));
     }
+    if (target.key->default_text != nullptr) {  // a default in words: it depends on the scene
+      throw InputError(
+          fmt::format("scene address '{}' is not set and its default depends on the "
+                      "scene {}: set it",
+                      address, target.key->default_text()));
+    }
     return default_number(*target.key);
   }
   if (node->is_floating_point()) return node->as_floating_point()->get();

@@ -7,6 +7,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene_test_util.h"
 
@@ -38,6 +40,40 @@ TEST(SceneTable, GetReturnsFileValueOrDeclaredDefault) {
   EXPECT_EQ(get_scene_number(table, "blank.elements"), BlankSpec{}.elements);
   EXPECT_EQ(get_scene_number(table, "material.hardening.K_MPa"), HardeningSpec{}.K_MPa);
   EXPECT_EQ(get_scene_number(table, "tool.punch.friction"), ToolSpec{}.friction);
+}
+
+// Two numerics defaults depend on the geometry (load_scene.cc): the implicit update at 0.25
+// element lengths for axisymmetric scenes, heun at 0.025 for shell3d; the cap follows the update
+// unless the scene sets it.
+TEST(SceneTable, NumericsDefaultsFollowTheGeometryAndTheUpdate) {
+  const auto scene_with = [](const std::vector<std::pair<std::string, std::string>>& sets) {
+    toml::table table = minimal_table();
+    for (const auto& [address, value] : sets) set_scene_value_from_text(table, address, value);
+    return scene_from_table(table, "memory", "");
+  };
+  const Scene axi = scene_with({});
+  EXPECT_EQ(axi.numerics.time_integration, TimeIntegration::kImplicit);
+  EXPECT_EQ(axi.numerics.max_travel_increment_per_length, 0.25);
+  const Scene axi_heun = scene_with({{"numerics.time_integration", "heun"}});
+  EXPECT_EQ(axi_heun.numerics.time_integration, TimeIntegration::kHeun);
+  EXPECT_EQ(axi_heun.numerics.max_travel_increment_per_length, 0.025);
+  const Scene axi_set = scene_with({{"numerics.max_travel_increment_per_length", "0.1"}});
+  EXPECT_EQ(axi_set.numerics.time_integration, TimeIntegration::kImplicit);
+  EXPECT_EQ(axi_set.numerics.max_travel_increment_per_length, 0.1);
+  const std::string ex4a =
+      std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml";
+  toml::table table3d = read_scene_table(ex4a);
+  const Scene shell = scene_from_table(table3d, ex4a, "");
+  EXPECT_EQ(shell.numerics.time_integration, TimeIntegration::kHeun);
+  EXPECT_EQ(shell.numerics.max_travel_increment_per_length, 0.025);
+  set_scene_value_from_text(table3d, "numerics.time_integration", "implicit");
+  const Scene shell_implicit = scene_from_table(table3d, ex4a, "");
+  EXPECT_EQ(shell_implicit.numerics.max_travel_increment_per_length, 0.25);
+  // A number read from the table (the calibration's start values) cannot name such a default.
+  EXPECT_NE(error_of([] {
+              get_scene_number(minimal_table(), "numerics.max_travel_increment_per_length");
+            }).find("depends on the scene"),
+            std::string::npos);
 }
 
 TEST(SceneTable, SetGetRoundTripAndRebuild) {
