@@ -411,10 +411,10 @@ std::vector<KeySpec> build_keys() {
   add(make(nu, "strain_rate_cutoff", kFloat,
            float_field<&numerics, &NumericsSpec::strain_rate_cutoff>(), "", closed(1e-12, 0.5),
            "Cut-off strain rate relative to punch_speed / blank radius: below it the flow law "
-           "turns viscous (rigid regions creep at about this rate). 1e-2 with "
-           "max_travel_increment_per_length = 0.05 is the speed setting (about half the run "
-           "time, answers within ~1 %; experiments/01_performance). In 3D the cut-off is the "
-           "main lever: 1e-2 with max_travel_increment_per_length = 0.035 runs ex4a (n = 4, "
+           "turns viscous (rigid regions creep at about this rate). With heun, 1e-2 and "
+           "max_travel_increment_per_length = 0.05 halve the run time, answers within ~1 % "
+           "(experiments/01_performance). In 3D the cut-off is the main lever: with heun, 1e-2 "
+           "and max_travel_increment_per_length = 0.035 run ex4a (n = 4, "
            "friction 0.2) in about half the time, within 0.2 % in force and 0.007 in thickness "
            "strain of the axisymmetric solver from ~6 mm on (the first mm are 2-8 % low; 3e-3 "
            "keeps the whole curve within 2 %; experiments/05_shell3d)."));
