@@ -12,6 +12,7 @@
 #include <numbers>
 #include <optional>
 
+#include "contact/overlap_monitor.h"
 #include "core/error.h"
 #include "model/axisym_model.h"
 #include "model/axisym_problem.h"
@@ -145,11 +146,8 @@ class AxisymStepper {
   double contact_tol_ = 0.0;  // gap below which a node touches a tool
   double attach_tol_ = 0.0;   // search tolerance next to a touching neighbour
   RunTimings timings_;
-  int friction_fallbacks_ = 0;  // solves redone with lagged friction
-  // First squeezed state (travel, initial radius, tools, overlap) and the largest overlap.
-  double squeeze_travel_mm_ = -1.0, squeeze_r0_mm_ = 0.0, squeeze_first_mm_ = 0.0;
-  double squeeze_max_mm_ = 0.0;
-  std::string squeeze_tools_;
+  int friction_fallbacks_ = 0;                          // solves redone with lagged friction
+  OverlapMonitor overlaps_{scene_.blank.thickness_mm};  // a sheet squeezed through a second tool
   // First ironed element longer than kIroningElementRatio initial thicknesses (travel, length).
   double coarse_ironing_travel_mm_ = -1.0, coarse_ironing_length_mm_ = 0.0;
 };
@@ -445,8 +443,6 @@ bool AxisymStepper::update_thickness(AxisymState& s, std::string* why) const {
 }
 
 void AxisymStepper::note_squeeze(const AxisymState& s) {
-  // Overlaps below 2 % of the initial thickness are contact tolerance, not a squeeze.
-  const double tol = 0.02 * scene_.blank.thickness_mm;
   for (int i = 0; i < model_.num_nodes(); ++i) {
     const NodeContact& c = s.contact[i];
     if (c.squeeze_tool >= 0 && coarse_ironing_travel_mm_ < 0.0) {
@@ -465,14 +461,10 @@ void AxisymStepper::note_squeeze(const AxisymState& s) {
       const RigidTool& other = model_.tools()[t];
       if (static_cast<int>(t) == c.tool || other.kind() == ToolKind::kBlankHolder) continue;
       const double overlap = -other.gap(s.x[i], h);
-      if (overlap <= tol) continue;
-      squeeze_max_mm_ = std::max(squeeze_max_mm_, overlap);
-      if (squeeze_travel_mm_ < 0.0) {
-        squeeze_travel_mm_ = travel(s);
-        squeeze_r0_mm_ = model_.initial_radius(i);
-        squeeze_first_mm_ = overlap;
-        squeeze_tools_ = model_.tools()[c.tool].name() + "' and '" + other.name();
-      }
+      if (overlap <= overlaps_.tolerance_mm()) continue;
+      overlaps_.note(travel(s), overlap, model_.tools()[c.tool].name(), other.name(),
+                     fmt::format("initial radius {:.3g} mm", model_.initial_radius(i)),
+                     c.squeeze_tool == static_cast<int>(t));
     }
   }
 }
@@ -505,13 +497,7 @@ void AxisymStepper::finish(RunResult* result) const {
   result->timings.linear_solve_s = timings_.linear_solve_s;
   result->timings.factorisations = timings_.factorisations;
   result->friction_fallbacks = friction_fallbacks_;
-  if (squeeze_travel_mm_ >= 0.0) {
-    result->warnings.push_back(fmt::format(
-        "from punch travel {:.2f} mm the sheet is squeezed between tools '{}' (node at initial "
-        "radius {:.3g} mm overlaps the second tool by {:.3g} mm, up to {:.3g} mm later, more "
-        "than the ironing constraint allows): results beyond that travel are not trustworthy",
-        squeeze_travel_mm_, squeeze_tools_, squeeze_r0_mm_, squeeze_first_mm_, squeeze_max_mm_));
-  }
+  for (std::string& w : overlaps_.warnings()) result->warnings.push_back(std::move(w));
   if (coarse_ironing_travel_mm_ >= 0.0) {
     result->warnings.push_back(fmt::format(
         "from punch travel {:.2f} mm the sheet is ironed on an element {:.3g} mm long, more than "

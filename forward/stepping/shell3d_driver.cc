@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "contact/overlap_monitor.h"
 #include "element/lagrange9.h"
 #include "element/quadrature.h"
 #include "model/forming_fields.h"
@@ -150,6 +151,7 @@ class Shell3dStepper {
   void history(const Solved& /*s*/, double /*travel*/, RunResult* /*result*/) const {}
   void observe(const Solved& s) {
     if (fields_->initial.x.empty()) fields_->initial = stage(s);  // zero travel
+    note_overlaps(s.state);
   }
   void start(RunResult* result) const;
   void finish(RunResult* result) const;
@@ -160,6 +162,8 @@ class Shell3dStepper {
     return s.time_s * scene_.process.punch_speed_mm_per_s;
   }
   ShellStage stage(const Solved& solved) const;
+  // Contact nodes that overlap a second tool (not the holder) beyond the tolerance.
+  void note_overlaps(const FormingState& s);
 
   const Scene& scene_;
   RunOptions options_;
@@ -175,7 +179,27 @@ class Shell3dStepper {
   double assembly_s_ = 0.0, factorisation_s_ = 0.0;
   int factorisations_ = 0;
   mutable double contact_s_ = 0.0;
+  OverlapMonitor overlaps_{scene_.blank.thickness_mm};  // a sheet squeezed through a second tool
 };
+
+void Shell3dStepper::note_overlaps(const FormingState& s) {
+  const auto t0 = Clock::now();
+  const auto& tools = model_.tools();
+  for (int i = 0; i < model_.num_nodes(); ++i) {
+    const NodeContact3& c = s.contact[i];
+    if (c.tool < 0 || c.sandwiched) continue;
+    for (int t = 0; t < static_cast<int>(tools.size()); ++t) {
+      if (t == c.tool || tools[t].kind() == ToolKind::kBlankHolder) continue;
+      const double overlap = -model_.project(t, s.x[i], s.thickness[i], model_.on_axis(i)).gap;
+      if (overlap <= overlaps_.tolerance_mm()) continue;
+      const Vec3& x0 = model_.initial_position(i);
+      overlaps_.note(travel(s), overlap, tools[c.tool].name(), tools[t].name(),
+                     fmt::format("initial position ({:.3g}, {:.3g}) mm", x0.x(), x0.y()),
+                     c.squeeze_tool == t);
+    }
+  }
+  contact_s_ += seconds_since(t0);
+}
 
 void Shell3dStepper::attach(FormingState& s, int node, int tool) const {
   const auto p = model_.project(tool, s.x[node], s.thickness[node], model_.on_axis(node));
@@ -523,6 +547,7 @@ void Shell3dStepper::start(RunResult* result) const {
 }
 
 void Shell3dStepper::finish(RunResult* result) const {
+  for (std::string& w : overlaps_.warnings()) result->warnings.push_back(std::move(w));
   result->timings.assembly_s = assembly_s_;
   result->timings.linear_solve_s = factorisation_s_;
   result->timings.factorisations = factorisations_;

@@ -73,6 +73,11 @@ TEST(Forming3dIroning, WallInTheClearanceIsHeldAtTheClearance) {
   // Held at the clearance within the axisymmetric test's 2 % (the penalty, and an overshoot
   // ironed over a few steps).
   EXPECT_LT(thickest_in, 1.02 * kClearanceMm);
+  // No node passes through a tool without the ironing constraint (contact/overlap_monitor.h).
+  for (const std::string& w : r.warnings) {
+    std::printf("warning: %s\n", w.c_str());
+    EXPECT_EQ(w.find("not trustworthy"), std::string::npos) << w;
+  }
 }
 
 // Against the axisymmetric twin (50 elements; it irons whole elements, AxisymModel::add_squeeze):
