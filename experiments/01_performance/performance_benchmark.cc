@@ -174,34 +174,34 @@ int main(int argc, char** argv) {
     // after of the default.
     const Overrides heun{{"numerics.time_integration", "heun"}};
     std::cout << "heun series: " << cli_args(heun) << "\n";
-    const std::vector<Row> fast = measure(heun);
-    const Row& ff = fast.back();
-    Table tf;
-    tf.header = {"elements",
-                 "cpu_ms",
-                 "steps",
-                 "iterations",
-                 "peak_load_N",
-                 "pole_eps_t",
-                 "dev_peak_vs_finest",
-                 "dev_pole_vs_finest",
-                 "completed"};
-    const int chosen_fast = coarsest_within_one_percent(fast);
-    for (std::size_t i = 0; i < fast.size(); ++i) {
-      const Row& r = fast[i];
-      const double dp = rel(r.peak, ff.peak), de = rel(r.pole, ff.pole);
-      tf.add({std::to_string(r.elements), ms(r.run.cpu_s),
-              std::to_string(r.run.result.steps.size()),
-              std::to_string(r.run.result.total_iterations), fmt::format("{:.1f}", r.peak),
-              fmt::format("{:.5f}", r.pole), pct(dp), pct(de),
-              r.run.result.completed() ? "yes" : "no"});
+    const std::vector<Row> heun_rows = measure(heun);
+    const Row& heun_finest = heun_rows.back();
+    Table heun_table;
+    heun_table.header = {"elements",
+                         "cpu_ms",
+                         "steps",
+                         "iterations",
+                         "peak_load_N",
+                         "pole_eps_t",
+                         "dev_peak_vs_finest",
+                         "dev_pole_vs_finest",
+                         "completed"};
+    const int chosen_heun = coarsest_within_one_percent(heun_rows);
+    for (std::size_t i = 0; i < heun_rows.size(); ++i) {
+      const Row& r = heun_rows[i];
+      const double dp = rel(r.peak, heun_finest.peak), de = rel(r.pole, heun_finest.pole);
+      heun_table.add({std::to_string(r.elements), ms(r.run.cpu_s),
+                      std::to_string(r.run.result.steps.size()),
+                      std::to_string(r.run.result.total_iterations), fmt::format("{:.1f}", r.peak),
+                      fmt::format("{:.5f}", r.pole), pct(dp), pct(de),
+                      r.run.result.completed() ? "yes" : "no"});
     }
     md += "\n**Heun** (`" + cli_args(heun).substr(1) +
           "`: the explicit update at its stable step, 0.025 element lengths, the default before "
           "the implicit update; deviations against the finest mesh of the same series):\n\n" +
-          tf.markdown() + "\n";
-    if (chosen_fast >= 0) {
-      const Row& c = fast[static_cast<std::size_t>(chosen_fast)];
+          heun_table.markdown() + "\n";
+    if (chosen_heun >= 0) {
+      const Row& c = heun_rows[static_cast<std::size_t>(chosen_heun)];
       md += fmt::format(
           "With Heun the coarsest mesh within 1% of the finest in both quantities is **{} "
           "elements** at **{} ms** of thread CPU time ({:.2f}x the 50 ms goal).\n",

@@ -30,11 +30,13 @@ class OverlapMonitor {
 
   double tolerance_mm() const { return tolerance_mm_; }
 
-  // A node at `where` ("initial radius 12.3 mm") touching tool `touching` overlaps tool `other`
-  // by `overlap_mm` at punch travel `travel_mm`; `squeezed`: the ironing constraint holds it
-  // between the two. Overlaps within the tolerance are ignored.
+  // A node touching tool `touching` overlaps tool `other` by `overlap_mm` at punch travel
+  // `travel_mm`; `squeezed`: the ironing constraint holds it between the two. where() names the
+  // node ("initial radius 12.3 mm"); it is called only for the first occurrence of each case.
+  // Overlaps within the tolerance are ignored.
+  template <class Where>
   void note(double travel_mm, double overlap_mm, const std::string& touching,
-            const std::string& other, const std::string& where, bool squeezed) {
+            const std::string& other, const Where& where, bool squeezed) {
     if (!(overlap_mm > tolerance_mm_)) return;
     Record& r = squeezed ? lag_ : through_;
     r.max_mm = std::max(r.max_mm, overlap_mm);
@@ -42,7 +44,7 @@ class OverlapMonitor {
     r.travel_mm = travel_mm;
     r.first_mm = overlap_mm;
     r.tools = fmt::format("'{}' and '{}'", touching, other);
-    r.where = where;
+    r.where = where();
   }
 
   bool through_seen() const { return through_.travel_mm >= 0.0; }

@@ -50,8 +50,9 @@ void apply_geometry_defaults(const toml::table& table, Scene* scene) {
                                                                      : TimeIntegration::kHeun;
   }
   if (!table.at_path("numerics.max_travel_increment_per_length")) {
-    nu.max_travel_increment_per_length =
-        nu.time_integration == TimeIntegration::kImplicit ? 0.25 : 0.025;
+    nu.max_travel_increment_per_length = nu.time_integration == TimeIntegration::kImplicit
+                                             ? kImplicitTravelIncrementPerLength
+                                             : NumericsSpec{}.max_travel_increment_per_length;
   }
 }
 

@@ -181,6 +181,10 @@ enum class ShellElementRule {
   kPaperSelective,  // the paper's rule: in-plane 3x3, transverse shear 2x2
 };
 
+// The implicit update's default step cap in element lengths (a cap for accuracy: smooth and
+// within 0.2 % in force on ex1; experiments/06_step_stability).
+inline constexpr double kImplicitTravelIncrementPerLength = 0.25;
+
 struct NumericsSpec {
   int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
@@ -204,7 +208,8 @@ struct NumericsSpec {
   // regions switches from step to step and outputs jitter by up to 1 %; the implicit update is
   // stable at any step, where this cap is for accuracy only (0.25 is smooth and within 0.2 % in
   // force on ex1; experiments/06_step_stability). A scene file without the key gets 0.25 with
-  // the implicit update, 0.025 with heun or euler (load_scene.cc, apply_geometry_defaults).
+  // the implicit update (kImplicitTravelIncrementPerLength), 0.025 with heun or euler (this
+  // default; load_scene.cc, apply_geometry_defaults).
   double max_travel_increment_per_length = 0.025;
   double max_strain_increment = 0.02;     // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius

@@ -67,6 +67,10 @@ std::string applies_text(const KeySpec& key) {
   return geometry.empty() ? out : geometry + "; " + out;
 }
 
+// A default given in words ("(implicit for axisymmetric, ...)", "(the scene's value)"), not as
+// TOML.
+bool default_in_words(const std::string& text) { return !text.empty() && text.front() == '('; }
+
 // Whether the key is used by the section's default variant (so its default line is active).
 bool used_by_default_variant(const KeySpec& key) {
   if (!key.geometry.empty() &&
@@ -100,10 +104,9 @@ void append_defaults_key(std::string& out, const KeySpec& key, bool whole_sectio
   out += fmt::format("# {}\n", key.doc);
   if (!notes.empty()) out += fmt::format("# ({})\n", notes);
   const std::string value = default_toml_text(key);
-  // A default in words ("(implicit for axisymmetric, ...)") is not TOML: shown commented out.
-  const bool words = !value.empty() && value.front() == '(';
-  const bool active =
-      !whole_section_commented && !value.empty() && !words && used_by_default_variant(key);
+  // A default in words is not TOML: shown commented out.
+  const bool active = !whole_section_commented && !value.empty() && !default_in_words(value) &&
+                      used_by_default_variant(key);
   const std::string shown = !value.empty() ? value : key.required ? "<required>" : "<none>";
   out += fmt::format("{}{} = {}\n\n", active ? "" : "# ", key.name, shown);
 }
@@ -114,7 +117,7 @@ void append_markdown_row(std::string& out, const KeySpec& key) {
     default_text = "required";
   } else if (default_text.empty()) {
     default_text = "none";
-  } else if (default_text.front() != '(') {  // "(the scene's value)": words, not TOML
+  } else if (!default_in_words(default_text)) {
     default_text = fmt::format("`{}`", default_text);
   }
   out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", key.name, type_text(key),

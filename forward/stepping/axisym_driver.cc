@@ -460,11 +460,10 @@ void AxisymStepper::note_squeeze(const AxisymState& s) {
     for (std::size_t t = 0; t < model_.tools().size(); ++t) {
       const RigidTool& other = model_.tools()[t];
       if (static_cast<int>(t) == c.tool || other.kind() == ToolKind::kBlankHolder) continue;
-      const double overlap = -other.gap(s.x[i], h);
-      if (overlap <= overlaps_.tolerance_mm()) continue;
-      overlaps_.note(travel(s), overlap, model_.tools()[c.tool].name(), other.name(),
-                     fmt::format("initial radius {:.3g} mm", model_.initial_radius(i)),
-                     c.squeeze_tool == static_cast<int>(t));
+      overlaps_.note(
+          travel(s), -other.gap(s.x[i], h), model_.tools()[c.tool].name(), other.name(),
+          [&] { return fmt::format("initial radius {:.3g} mm", model_.initial_radius(i)); },
+          c.squeeze_tool == static_cast<int>(t));
     }
   }
 }

@@ -191,11 +191,13 @@ void Shell3dStepper::note_overlaps(const FormingState& s) {
     for (int t = 0; t < static_cast<int>(tools.size()); ++t) {
       if (t == c.tool || tools[t].kind() == ToolKind::kBlankHolder) continue;
       const double overlap = -model_.project(t, s.x[i], s.thickness[i], model_.on_axis(i)).gap;
-      if (overlap <= overlaps_.tolerance_mm()) continue;
-      const Vec3& x0 = model_.initial_position(i);
-      overlaps_.note(travel(s), overlap, tools[c.tool].name(), tools[t].name(),
-                     fmt::format("initial position ({:.3g}, {:.3g}) mm", x0.x(), x0.y()),
-                     c.squeeze_tool == t);
+      overlaps_.note(
+          travel(s), overlap, tools[c.tool].name(), tools[t].name(),
+          [&] {
+            const Vec3& x0 = model_.initial_position(i);
+            return fmt::format("initial position ({:.3g}, {:.3g}) mm", x0.x(), x0.y());
+          },
+          c.squeeze_tool == t);
     }
   }
   contact_s_ += seconds_since(t0);

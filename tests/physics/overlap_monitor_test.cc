@@ -5,14 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace vs {
 namespace {
 
 TEST(OverlapMonitor, OverlapsWithinTheContactToleranceAreIgnored) {
   OverlapMonitor m(1.0);  // tolerance 0.02 mm
   EXPECT_DOUBLE_EQ(m.tolerance_mm(), 0.02);
-  m.note(10.0, 0.02, "die", "punch", "initial radius 50 mm", false);
-  m.note(11.0, 0.019, "die", "punch", "initial radius 50 mm", true);
+  m.note(
+      10.0, 0.02, "die", "punch", [] { return std::string("initial radius 50 mm"); }, false);
+  m.note(
+      11.0, 0.019, "die", "punch", [] { return std::string("initial radius 50 mm"); }, true);
   EXPECT_FALSE(m.through_seen());
   EXPECT_FALSE(m.lag_seen());
   EXPECT_TRUE(m.warnings().empty());
@@ -20,9 +24,12 @@ TEST(OverlapMonitor, OverlapsWithinTheContactToleranceAreIgnored) {
 
 TEST(OverlapMonitor, KeepsTheFirstOccurrenceAndTheLargestOverlap) {
   OverlapMonitor m(0.5);  // tolerance 0.01 mm
-  m.note(30.0, 0.011, "die", "punch", "initial radius 40 mm", false);
-  m.note(31.0, 0.05, "punch", "die", "initial radius 45 mm", false);
-  m.note(32.0, 0.03, "die", "punch", "initial radius 41 mm", false);
+  m.note(
+      30.0, 0.011, "die", "punch", [] { return std::string("initial radius 40 mm"); }, false);
+  m.note(
+      31.0, 0.05, "punch", "die", [] { return std::string("initial radius 45 mm"); }, false);
+  m.note(
+      32.0, 0.03, "die", "punch", [] { return std::string("initial radius 41 mm"); }, false);
   ASSERT_TRUE(m.through_seen());
   EXPECT_FALSE(m.lag_seen());
   EXPECT_DOUBLE_EQ(m.largest_through_mm(), 0.05);
@@ -37,8 +44,12 @@ TEST(OverlapMonitor, KeepsTheFirstOccurrenceAndTheLargestOverlap) {
 
 TEST(OverlapMonitor, IroningLagIsReportedApartFromASheetThroughATool) {
   OverlapMonitor m(1.0);
-  m.note(37.0, 0.039, "die", "punch", "initial position (32.8, 39.7) mm", true);
-  m.note(37.2, 0.058, "die", "punch", "initial position (33.1, 39.9) mm", true);
+  m.note(
+      37.0, 0.039, "die", "punch", [] { return std::string("initial position (32.8, 39.7) mm"); },
+      true);
+  m.note(
+      37.2, 0.058, "die", "punch", [] { return std::string("initial position (33.1, 39.9) mm"); },
+      true);
   EXPECT_FALSE(m.through_seen());
   ASSERT_TRUE(m.lag_seen());
   EXPECT_DOUBLE_EQ(m.largest_lag_mm(), 0.058);
@@ -48,7 +59,8 @@ TEST(OverlapMonitor, IroningLagIsReportedApartFromASheetThroughATool) {
                       "lags the narrowing clearance"),
             std::string::npos);
   EXPECT_NE(w[0].find("by 0.039 mm, up to 0.058 mm later"), std::string::npos);
-  m.note(40.0, 0.1, "punch", "die", "initial position (1, 2) mm", false);
+  m.note(
+      40.0, 0.1, "punch", "die", [] { return std::string("initial position (1, 2) mm"); }, false);
   w = m.warnings();
   ASSERT_EQ(w.size(), 2u);
   EXPECT_NE(w[0].find("not trustworthy"), std::string::npos);
