@@ -161,10 +161,21 @@ std::vector<DataSet> make_data_sets(const CalibrationConfig& config,
   return sets;
 }
 
+// Whether data set k states its noise (a sigma, a weight or a sigma column); the relative
+// default is a fraction of the curve's range, not a noise scale.
+bool sigma_stated(const DataSpec& d) {
+  return d.sigma > 0.0 || d.weight > 0.0 || !d.measurement.point_sigma.empty();
+}
+
+// `resolution`: per data set, the forward resolution of its simulated values in data units
+// (forward_resolution()); `config` data sets in the pipeline's order.
 std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evaluation& e,
-                                  const LackOfFitOptions& lack_of_fit_options) {
+                                  const CalibrationConfig& config,
+                                  const std::vector<double>& resolution) {
+  const LackOfFitOptions& lack_of_fit_options = config.uncertainty.lack_of_fit;
   std::vector<DataSetFit> fits;
-  for (const auto& d : pipeline.data_sets()) {
+  for (std::size_t k = 0; k < pipeline.data_sets().size(); ++k) {
+    const DataSet& d = pipeline.data_sets()[k];
     const Measurement& m = d.measurement;
     DataSetFit fit;
     fit.name = m.name;
@@ -189,11 +200,19 @@ std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evalua
     }
     fit.rms_difference = std::sqrt(sum_sq / static_cast<double>(m.x.size()));
     fit.cost = cost;
-    std::vector<double> normalised;
-    for (std::size_t i = 0; i < m.x.size(); ++i) {
-      normalised.push_back(d.weights[i] * (fit.simulated[i] - m.y[i]));
+    if (sigma_stated(config.data.at(k))) {
+      std::vector<double> normalised;
+      for (std::size_t i = 0; i < m.x.size(); ++i) {
+        normalised.push_back(d.weights[i] * (fit.simulated[i] - m.y[i]));
+      }
+      fit.lack_of_fit = lack_of_fit(normalised, m.name, lack_of_fit_options);
+    } else {
+      std::vector<double> difference;
+      for (std::size_t i = 0; i < m.x.size(); ++i) difference.push_back(fit.simulated[i] - m.y[i]);
+      fit.lack_of_fit =
+          lack_of_fit_unstated(difference, std::vector<double>(m.x.size(), resolution.at(k)),
+                               ordinate_unit(m.kind), m.name, lack_of_fit_options);
     }
-    fit.lack_of_fit = lack_of_fit(normalised, m.name, lack_of_fit_options);
     fits.push_back(std::move(fit));
   }
   return fits;
@@ -231,25 +250,39 @@ void finish(const ForwardCache& cache, const CalibrationConfig& config,
   }
 }
 
-// Per residual, what the forward solver's convergence leaves unresolved (least_squares.h):
-// factor x tolerance x the data set's largest |measured value|, weighted like the residual.
-Eigen::VectorXd residual_noise(const CalibrationConfig& config,
-                               const std::vector<SceneBinding>& bindings,
-                               const ResidualPipeline& pipeline) {
-  const double factor = config.optimizer.noise_floor_factor;
-  if (!(factor > 0.0)) return {};
-  Eigen::VectorXd noise(pipeline.num_residuals());
-  for (std::size_t k = 0; k < pipeline.data_sets().size(); ++k) {
-    const DataSet& d = pipeline.data_sets()[k];
+// Per data set, what the forward solver's convergence leaves unresolved in its simulated
+// values, in data units (least_squares.h): factor x tolerance x the data set's largest
+// |measured value|.
+std::vector<double> forward_resolution(const CalibrationConfig& config,
+                                       const std::vector<SceneBinding>& bindings,
+                                       const ResidualPipeline& pipeline, double factor) {
+  std::vector<double> resolution;
+  for (const DataSet& d : pipeline.data_sets()) {
     const double tolerance =
         config.forward.tolerance > 0.0
             ? config.forward.tolerance
             : bindings.at(static_cast<std::size_t>(d.scene)).base_scene().numerics.tolerance;
     double largest = 0.0;
     for (double y : d.measurement.y) largest = std::max(largest, std::abs(y));
+    resolution.push_back(factor * tolerance * largest);
+  }
+  return resolution;
+}
+
+// Per residual, the forward resolution weighted like the residual (the noise-floor stop);
+// empty when noise_floor_factor is 0 (no stop).
+Eigen::VectorXd residual_noise(const CalibrationConfig& config,
+                               const std::vector<SceneBinding>& bindings,
+                               const ResidualPipeline& pipeline) {
+  const double factor = config.optimizer.noise_floor_factor;
+  if (!(factor > 0.0)) return {};
+  const std::vector<double> resolution = forward_resolution(config, bindings, pipeline, factor);
+  Eigen::VectorXd noise(pipeline.num_residuals());
+  for (std::size_t k = 0; k < pipeline.data_sets().size(); ++k) {
+    const DataSet& d = pipeline.data_sets()[k];
     const int offset = pipeline.offset(static_cast<int>(k));
     for (std::size_t i = 0; i < d.weights.size(); ++i) {
-      noise[offset + static_cast<Eigen::Index>(i)] = factor * tolerance * largest * d.weights[i];
+      noise[offset + static_cast<Eigen::Index>(i)] = resolution[k] * d.weights[i];
     }
   }
   return noise;
@@ -431,13 +464,17 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   CalibrationResult result;
   for (const auto& b : bindings) result.scene_sources.push_back(b.source());
   for (const auto& d : config.data) {
-    result.data_weighting.push_back(
-        {d.measurement.name, data_set_sigma(d).text,
-         d.sigma == 0.0 && d.weight == 0.0 && d.measurement.point_sigma.empty()});
+    result.data_weighting.push_back({d.measurement.name, data_set_sigma(d).text, !sigma_stated(d)});
   }
   const ForwardModel model_for_alternatives = config.model_forms.empty() ? ForwardModel{} : model;
   ResidualPipeline pipeline(make_data_sets(config, bindings));
   const Eigen::VectorXd noise = residual_noise(config, bindings, pipeline);
+  // The scale of the lack-of-fit diagnostic for data sets with no stated sigma: the forward
+  // resolution exists whether or not the noise-floor stop is on.
+  const std::vector<double> resolution = forward_resolution(
+      config, bindings, pipeline,
+      config.optimizer.noise_floor_factor > 0.0 ? config.optimizer.noise_floor_factor
+                                                : kDefaultNoiseFloorFactor);
   ForwardCache cache(std::move(model), std::move(bindings), config.parameters, std::move(pipeline),
                      config.optimizer.threads);
   Objective objective(&cache, config.optimizer.fd);
@@ -499,7 +536,7 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   const auto final_point = objective.evaluate(x);
   result.final_cost = final_point->cost;
   if (final_point->ok) {
-    result.fits = make_fits(cache.pipeline(), *final_point, config.uncertainty.lack_of_fit);
+    result.fits = make_fits(cache.pipeline(), *final_point, config, resolution);
     const FdJacobian j = options.uncertainty ? objective.jacobian(x) : FdJacobian{};
     if (!options.uncertainty) {
       result.uncertainty_message = "not computed (model-form refit)";

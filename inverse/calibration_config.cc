@@ -368,6 +368,8 @@ void read_uncertainty(const toml::table* t, const std::string& file, Uncertainty
   u.lack_of_fit.significance =
       r.number("lack_of_fit_significance").value_or(u.lack_of_fit.significance);
   u.lack_of_fit.min_rms = r.number("lack_of_fit_min_rms").value_or(u.lack_of_fit.min_rms);
+  u.lack_of_fit.min_resolutions =
+      r.number("lack_of_fit_min_resolutions").value_or(u.lack_of_fit.min_resolutions);
   r.finish();
 }
 

@@ -135,7 +135,9 @@ std::vector<KeySpec> build() {
       [] { return float_toml_text(kDefaultRelativeSigma); },
       "When the data set gives no sigma, weight or sigma column: sigma = "
       "relative_sigma x (max - min) of the measured ordinate, so that curves of "
-      "different quantities weigh alike. The report states the sigma used."));
+      "different quantities weigh alike. The report states the sigma used. It is a weighting, "
+      "not a noise estimate: the lack-of-fit verdict of such a data set is judged against the "
+      "forward resolution instead (lack_of_fit_min_resolutions)."));
   k.push_back(key(
       d, "travel_mm", kFloat, "mm", open_above(0), [] { return std::string(""); },
       "Strain profiles only: the punch travel the profile was taken at. Read from the "
@@ -257,13 +259,25 @@ std::vector<KeySpec> build() {
       u, "lack_of_fit_significance", kFloat, "", Range{0, 0.5, false, false},
       [] { return float_toml_text(uncertainty().lack_of_fit.significance); },
       "Lack-of-fit diagnostic per data set: one-sided level of the runs test and of the lag-1 "
-      "autocorrelation test on the normalised residuals (simulated - measured) / sigma. "
-      "Either test rejecting independent noise is a pattern."));
+      "autocorrelation test on the normalised residuals (simulated - measured) / sigma (or / "
+      "the forward resolution when the data set states no sigma). Either test rejecting "
+      "independent noise is a pattern."));
   k.push_back(key(
       u, "lack_of_fit_min_rms", kFloat, "", at_least(0),
       [] { return float_toml_text(uncertainty().lack_of_fit.min_rms); },
-      "A pattern whose rms is at least this many sigmas is reported as STRUCTURAL misfit "
-      "(model-form error, not noise); smaller patterns are negligible."));
+      "Data sets with a stated sigma (sigma, weight or a sigma column): a pattern whose rms "
+      "is at least this many sigmas is reported as STRUCTURAL misfit (model-form error, not "
+      "noise); smaller patterns are negligible."));
+  k.push_back(key(
+      u, "lack_of_fit_min_resolutions", kFloat, "", at_least(0),
+      [] { return float_toml_text(uncertainty().lack_of_fit.min_resolutions); },
+      "Data sets with no stated sigma (the relative default is a fraction of the range, not a "
+      "noise scale): a pattern whose rms is at least this many forward resolutions "
+      "(noise_floor_factor x tolerance x the curve's largest |value|; the default factor when "
+      "noise_floor_factor = 0) is STRUCTURAL, and the report gives its size in the data's "
+      "units and says that its size against the measurement noise is unknown. A fit that "
+      "stops at the noise floor leaves at most (1 + sqrt 3) = 2.7 resolutions rms "
+      "(inverse/lack_of_fit.h); smaller patterns are the solver's convergence noise."));
 
   k.push_back(required("model_form", "name", kString,
                        "Label of the alternative model choice in the report."));
@@ -314,7 +328,9 @@ const std::vector<SectionSpec>& calibration_sections() {
        "Covariance, intervals and the plain-language checks. Each interval also includes the "
        "parameter's forward resolution (how far the forward solver's convergence noise lets "
        "the fit stop from the least-squares optimum; calibration.json forward_resolution), "
-       "and each data set gets a lack-of-fit verdict (noise, structural, negligible)."},
+       "and each data set gets a lack-of-fit verdict (noise, structural, negligible): a "
+       "systematic pattern is judged against the stated sigma or, when the data set states "
+       "none, against the forward solver's resolution, never against the relative default."},
       {"forward", "[forward]", "Settings of every forward run of the calibration."},
       {"model_form", "[[model_form]]",
        "Model-form sensitivity: one table per alternative model choice (a finer mesh, another "

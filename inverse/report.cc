@@ -257,7 +257,17 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
       if (fit.shape_only) put_finite(entry, "shape_offset_mm", fit.shape_offset_mm);
     }
     const LackOfFit& l = fit.lack_of_fit;
-    ordered_json lof = {{"verdict", to_string(l.verdict)}, {"points", l.points}};
+    // The scale of the test: the stated sigma, or the forward resolution when none was stated
+    // (lack_of_fit.h); rms_normalised is in that unit.
+    ordered_json lof = {{"verdict", to_string(l.verdict)},
+                        {"points", l.points},
+                        {"sigma_stated", l.sigma_stated},
+                        {"rms_unit", l.sigma_stated ? "sigma" : "forward_resolution"}};
+    if (!l.sigma_stated) {
+      lof["rms_difference"] = l.rms_difference;
+      lof["forward_resolution"] = l.resolution;
+      lof["data_unit"] = l.unit;
+    }
     if (l.verdict != LackOfFitVerdict::kNotTested) {
       lof["rms_normalised"] = l.rms;
       lof["runs"] = l.runs;

@@ -39,6 +39,9 @@ bool UncertaintyOptions::IsValid(std::string* why) const {
   if (!(lack_of_fit.min_rms >= 0.0) || !std::isfinite(lack_of_fit.min_rms)) {
     return fail("lack_of_fit_min_rms must be finite and >= 0");
   }
+  if (!(lack_of_fit.min_resolutions >= 0.0) || !std::isfinite(lack_of_fit.min_resolutions)) {
+    return fail("lack_of_fit_min_resolutions must be finite and >= 0");
+  }
   return true;
 }
 

@@ -99,6 +99,7 @@ correlation_threshold = 0.9
 relative_error_threshold = 0.2
 lack_of_fit_significance = 0.05
 lack_of_fit_min_rms = 1
+lack_of_fit_min_resolutions = 20
 [[model_form]]
 name = "fine mesh"
 set = { "blank.elements" = 40 }
@@ -150,6 +151,8 @@ TEST(CalibrationReference, DefaultsInTheDocsAreTheReadersDefaults) {
             float_toml_text(c.optimizer.noise_floor_factor));
   EXPECT_EQ(default_toml_text(*find_calibration_key("uncertainty", "lack_of_fit_min_rms")),
             float_toml_text(c.uncertainty.lack_of_fit.min_rms));
+  EXPECT_EQ(default_toml_text(*find_calibration_key("uncertainty", "lack_of_fit_min_resolutions")),
+            float_toml_text(c.uncertainty.lack_of_fit.min_resolutions));
   EXPECT_EQ(default_toml_text(*find_calibration_key("forward", "tolerance")),
             float_toml_text(c.forward.tolerance));
   EXPECT_EQ(default_toml_text(*find_calibration_key("output", "directory")),

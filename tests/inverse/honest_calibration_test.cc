@@ -76,6 +76,50 @@ TEST(LackOfFit, RunsTestClosedForm) {
   EXPECT_EQ(lack_of_fit({1, -1, 1}, "few", {}).verdict, LackOfFitVerdict::kNotTested);
 }
 
+// No sigma stated: the pattern is measured in forward resolutions, not in an invented sigma.
+TEST(LackOfFit, UnstatedSigmaPatternFarAboveTheResolutionIsStructural) {
+  std::vector<double> difference, resolution;
+  for (int i = 0; i < 30; ++i) {
+    difference.push_back(5e-4 * std::sin(0.2 * i));  // a strain misfit of ~3.5e-4 rms
+    resolution.push_back(4e-8);
+  }
+  const LackOfFit l = lack_of_fit_unstated(difference, resolution, "1", "thick", {});
+  EXPECT_EQ(l.verdict, LackOfFitVerdict::kStructural) << l.text;
+  EXPECT_FALSE(l.sigma_stated);
+  EXPECT_NEAR(l.resolution, 4e-8, 1e-20);
+  EXPECT_NEAR(l.rms, l.rms_difference / 4e-8, 1e-9 * l.rms);
+  EXPECT_GT(l.rms_difference, 3e-4);
+  EXPECT_NE(l.text.find("STRUCTURAL"), std::string::npos);
+  EXPECT_NE(l.text.find("systematic"), std::string::npos);
+  EXPECT_NE(l.text.find("No sigma was stated"), std::string::npos) << l.text;
+  EXPECT_NE(l.text.find(fmt::format("{:.3g}", l.rms_difference)), std::string::npos) << l.text;
+  // The runs and autocorrelation figures are those of the stated-sigma test on the same shape.
+  const LackOfFit stated = lack_of_fit(difference, "thick", {});
+  EXPECT_EQ(stated.runs, l.runs);
+  EXPECT_DOUBLE_EQ(stated.lag1, l.lag1);
+}
+
+TEST(LackOfFit, UnstatedSigmaPatternAtTheResolutionIsNegligible) {
+  // A smooth pattern of 2 resolutions: what a fit stopped at the noise floor leaves.
+  std::vector<double> difference, resolution;
+  for (int i = 0; i < 30; ++i) {
+    difference.push_back(2.0 * 0.05 * std::sqrt(2.0) * std::sin(0.2 * i + 0.1));
+    resolution.push_back(0.05);
+  }
+  const LackOfFit l = lack_of_fit_unstated(difference, resolution, "N", "load", {});
+  EXPECT_EQ(l.verdict, LackOfFitVerdict::kNegligible) << l.text;
+  EXPECT_LT(l.runs, l.runs_expected);
+  EXPECT_NE(l.text.find(" N"), std::string::npos) << l.text;
+  LackOfFitOptions strict;
+  strict.min_resolutions = 1.0;
+  EXPECT_EQ(lack_of_fit_unstated(difference, resolution, "N", "load", strict).verdict,
+            LackOfFitVerdict::kStructural);
+  // Points without a resolution are left out.
+  resolution.assign(30, 0.0);
+  EXPECT_EQ(lack_of_fit_unstated(difference, resolution, "N", "load", {}).verdict,
+            LackOfFitVerdict::kNotTested);
+}
+
 // Load curve data for LinearFake (force = K + 1000 friction t) at t = 1..30, optionally with a
 // curvature the model cannot represent, and noise of `sigma`.
 Measurement linear_data(double K, double friction, double curvature, double sigma,
@@ -124,6 +168,103 @@ TEST(LackOfFitFit, FiresOnBiasedModelDataAndStaysQuietOnSynthetic) {
   EXPECT_NE(biased.brief_report().find("STRUCTURAL"), std::string::npos);
   const std::string json = calibration_json(biased, linear_config(dir, {}, sigma));
   EXPECT_NE(json.find("\"verdict\": \"structural\""), std::string::npos);
+}
+
+// A data set with no sigma, weighted by the relative default (1 % of its range).
+DataSpec default_sigma_set(Measurement m) {
+  DataSpec d;
+  d.measurement = std::move(m);
+  d.where = "test";
+  return d;
+}
+
+TEST(LackOfFitFit, FiresOnBiasedModelDataAtDefaultSigma) {
+  // A curvature of 6.7 N rms that a line cannot follow, no noise, no sigma stated: 0.15 of the
+  // default sigma (1 % of the 4350 N range), far above the forward resolution (20 x 1e-9 x
+  // 5001 N = 1e-4 N). A threshold in default sigmas would call it negligible.
+  const fs::path dir = scratch_dir();
+  CalibrationConfig config = linear_config(dir, {}, 1.0);
+  config.data = {default_sigma_set(linear_data(480.0, 0.15, 0.1, 0.0, 7))};
+  const auto biased = calibrate(config, quiet(), LinearFake{});
+  ASSERT_EQ(biased.fits.size(), 1u);
+  const LackOfFit& l = biased.fits[0].lack_of_fit;
+  EXPECT_EQ(l.verdict, LackOfFitVerdict::kStructural) << l.text;
+  EXPECT_FALSE(l.sigma_stated);
+  EXPECT_NEAR(l.resolution, 20.0 * 1e-9 * (480.0 + 150.0 * 30.0 + 0.1 * 14.5 * 14.5), 1e-9);
+  EXPECT_NEAR(l.rms_difference, biased.fits[0].rms_difference, 1e-9);
+  EXPECT_GT(l.rms_difference, 5.0);
+  EXPECT_LT(l.rms_difference, 0.5 * 0.01 * 4350.0);  // below the old threshold
+  EXPECT_NE(l.text.find("No sigma was stated"), std::string::npos) << l.text;
+  EXPECT_NE(l.text.find(" N"), std::string::npos) << l.text;
+  EXPECT_NE(biased.brief_report().find("STRUCTURAL"), std::string::npos);
+  const std::string json = calibration_json(biased, config);
+  EXPECT_NE(json.find("\"verdict\": \"structural\""), std::string::npos);
+  EXPECT_NE(json.find("\"rms_unit\": \"forward_resolution\""), std::string::npos);
+  // The verdict does not feed the fit: the same values as with a stated sigma of the default
+  // size (the weights are the same).
+  CalibrationConfig stated = config;
+  stated.data[0].sigma = data_set_sigma(config.data[0]).sigma;
+  const auto with_sigma = calibrate(stated, quiet(), LinearFake{});
+  EXPECT_EQ(with_sigma.free_values(), biased.free_values());
+  EXPECT_EQ(with_sigma.fits[0].lack_of_fit.verdict, LackOfFitVerdict::kNegligible)
+      << with_sigma.fits[0].lack_of_fit.text;
+}
+
+// StretchingFake with the forward solver's convergence jitter: 3 x tolerance x the curve's
+// scale, smooth along the curve (a pattern) with a phase that changes with the parameters.
+struct JitteredStretchingFake {
+  RunResult operator()(const Scene& scene) const {
+    RunResult run = StretchingFake{}(scene);
+    const double tolerance = scene.numerics.tolerance;
+    const double phase =
+        std::fmod(1e4 * (scene.material.hardening.K_MPa + 1e3 * punch_friction(scene)), 6.283);
+    for (auto& s : run.steps) {
+      s.punch_force_N +=
+          3.0 * tolerance * std::abs(s.punch_force_N) * std::sin(0.7 * s.punch_travel_mm + phase);
+    }
+    for (auto& p : run.profiles) {
+      for (std::size_t i = 0; i < p.r0_mm.size(); ++i) {
+        p.eps_thickness[i] += 3.0 * tolerance * 0.3 * std::sin(0.2 * p.r0_mm[i] + phase);
+      }
+    }
+    return run;
+  }
+};
+
+TEST(LackOfFitFit, NoiseFreeSyntheticAtDefaultSigmaIsQuiet) {
+  const fs::path dir = scratch_dir();
+  const fs::path scene_file = write_scene(dir);
+  Scene scene = load_scene(scene_file.string());
+  scene.process.output_travels_mm = {15.0, 25.0};
+  CalibrationConfig config;
+  scene.numerics.tolerance = config.forward.tolerance;
+  const RunResult run = JitteredStretchingFake{}(scene);
+  std::vector<double> travels, radii;
+  for (int i = 1; i <= 25; ++i) travels.push_back(i);
+  for (int i = 0; i <= 20; ++i) radii.push_back(2.0 * i);
+  const auto data = make_synthetic_measurements(
+      scene, run,
+      {{MeasurementKind::kLoadTravel, "load", 0.0, travels, 0.0, 0.0},
+       {MeasurementKind::kThicknessStrain, "thick_25", 25.0, radii, 0.0, 0.0}},
+      1);
+  config.scenes = {{"scene", scene_file.string(), "test"}};
+  config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1),
+                       param("material.hardening.K_MPa", 400.0, 100.0, 2000.0, 500.0)};
+  config.data = {default_sigma_set(data[0]), default_sigma_set(data[1])};
+  const auto result = calibrate(config, quiet(), JitteredStretchingFake{});
+  ASSERT_EQ(result.fits.size(), 2u);
+  for (const auto& fit : result.fits) {
+    EXPECT_FALSE(fit.lack_of_fit.sigma_stated);
+    EXPECT_NE(fit.lack_of_fit.verdict, LackOfFitVerdict::kStructural) << fit.lack_of_fit.text;
+    EXPECT_NE(fit.lack_of_fit.verdict, LackOfFitVerdict::kNotTested) << fit.lack_of_fit.text;
+  }
+  // The quiet verdict is the resolution threshold's doing: the jitter is a pattern, and with no
+  // threshold the same fit is called structural.
+  config.uncertainty.lack_of_fit.min_resolutions = 0.0;
+  const auto strict = calibrate(config, quiet(), JitteredStretchingFake{});
+  EXPECT_EQ(strict.free_values(), result.free_values());
+  EXPECT_EQ(strict.fits[0].lack_of_fit.verdict, LackOfFitVerdict::kStructural)
+      << strict.fits[0].lack_of_fit.text;
 }
 
 TEST(LackOfFitFit, NoiseFreeSyntheticStretchingIsNotStructural) {
@@ -351,6 +492,7 @@ active_set = false
 [uncertainty]
 lack_of_fit_significance = 0.05
 lack_of_fit_min_rms = 2
+lack_of_fit_min_resolutions = 25
 [[model_form]]
 name = "fine mesh"
 set = { "blank.elements" = 40 }
@@ -363,6 +505,7 @@ set = { "numerics.strain_rate_cutoff" = 1e-4 }
   EXPECT_FALSE(c.optimizer.least_squares.active_set);
   EXPECT_EQ(c.uncertainty.lack_of_fit.significance, 0.05);
   EXPECT_EQ(c.uncertainty.lack_of_fit.min_rms, 2.0);
+  EXPECT_EQ(c.uncertainty.lack_of_fit.min_resolutions, 25.0);
   ASSERT_EQ(c.model_forms.size(), 2u);
   EXPECT_EQ(c.model_forms[0].name, "fine mesh");
   EXPECT_EQ(c.model_forms[0].overrides.at(0).first, "blank.elements");
@@ -384,11 +527,13 @@ set = { "numerics.strain_rate_cutoff" = 1e-4 }
   EXPECT_NE(misspelt.find("did you mean 'set'"), std::string::npos) << misspelt;
   const std::string range = error_of("[optimizer]\nnoise_floor_factor = -1\n");
   EXPECT_NE(range.find("noise_floor_factor"), std::string::npos) << range;
+  const std::string resolutions = error_of("[uncertainty]\nlack_of_fit_min_resolutions = -1\n");
+  EXPECT_NE(resolutions.find("lack_of_fit_min_resolutions"), std::string::npos) << resolutions;
   const std::string twice = error_of(
       "[[model_form]]\nname = \"x\"\nset = {a = 1}\n[[model_form]]\nname = \"x\"\nset = "
       "{a = 2}\n");
   EXPECT_NE(twice.find("used twice"), std::string::npos) << twice;
-  for (const std::string& e : {missing_set, misspelt, range, twice}) {
+  for (const std::string& e : {missing_set, misspelt, range, resolutions, twice}) {
     EXPECT_EQ(e.find('\n'), std::string::npos) << e;
   }
 }
