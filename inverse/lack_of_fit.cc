@@ -90,9 +90,10 @@ bool run_tests(const std::vector<double>& normalised, const std::string& name,
   return true;
 }
 
-// "0.00049" for a strain (unit "1"), "42.1 N" otherwise.
+// "0.00049 (strain)" for a strain (unit "1": every dimensionless ordinate is one), "42.1 N"
+// otherwise.
 std::string in_units(double value, const std::string& unit) {
-  return unit.empty() || unit == "1" ? fmt::format("{:.3g}", value)
+  return unit.empty() || unit == "1" ? fmt::format("{:.3g} (strain)", value)
                                      : fmt::format("{:.3g} {}", value, unit);
 }
 

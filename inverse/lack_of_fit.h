@@ -82,9 +82,9 @@ LackOfFit lack_of_fit(const std::vector<double>& normalised, const std::string& 
                       const LackOfFitOptions& options);
 
 // A data set with no stated sigma: `difference` = simulated - measured and `resolution` = the
-// forward resolution delta_i > 0 of each point, both in the data's units `unit` ("N", "1",
-// "mm"), in the order of the abscissa. Points with a non-finite difference or a resolution that
-// is not positive are left out.
+// forward resolution delta_i > 0 of each point, both in the data's units `unit` ("N", "mm", or
+// "1" for a strain), in the order of the abscissa. Points with a non-finite difference or a
+// resolution that is not positive are left out.
 LackOfFit lack_of_fit_unstated(const std::vector<double>& difference,
                                const std::vector<double>& resolution, const std::string& unit,
                                const std::string& name, const LackOfFitOptions& options);
