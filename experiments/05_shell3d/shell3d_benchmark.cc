@@ -7,12 +7,13 @@
 //   shell3d_benchmark [--divisions 4,8,16] [--rules mitc9,paper_selective] [--friction F]
 //                     [--travel MM] [--outputs A,B,C] [--increment MM] [--axisym-elements N]
 //                     [--scene FILE] [--csv FILE] [--speed-setting] [--per-length X]
-//                     [--cutoff X] [--implicit] [--no-events] [--goal]
+//                     [--cutoff X] [--implicit] [--no-events] [--krylov-min N] [--goal]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
 // numerics.time_integration = implicit (the reference stays at its defaults); --no-events: with
-// numerics.contact_events = false. --goal: after each
+// numerics.contact_events = false; --krylov-min N: RunOptions::krylov_min_unknowns (Krylov steps on
+// the held factorisation from N unknowns; a huge N turns them off). --goal: after each
 // run, the issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric
 // solver at every output travel, in under 10 s wall) with the figures it rests on.
 //
@@ -81,6 +82,7 @@ struct Args {
   bool implicit = false;                  // --implicit: numerics.time_integration = implicit
   bool no_events = false;                 // --no-events: numerics.contact_events = false
   bool goal = false;
+  int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
   std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
@@ -132,6 +134,8 @@ Args parse(int argc, char** argv) {
       a.axisym_elements = std::stoi(value);
     } else if (key == "--csv") {
       a.csv = value;
+    } else if (key == "--krylov-min") {
+      a.krylov_min = std::stoi(value);
     } else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       std::exit(2);
@@ -304,9 +308,9 @@ int main(int argc, char** argv) {
       base.numerics.strain_rate_cutoff, base.numerics.thickness_points, omp_get_max_threads());
   std::printf("# axisymmetric reference: %d elements, %s, %.2f s\n", args.axisym_elements,
               axi.message.c_str(), axi_s);
-  std::printf("%-6s %-15s %5s %6s %8s %8s %8s %8s %6s %6s %6s %8s  %s\n", "div", "rule", "elem",
-              "dofs", "wall_s", "asm_s", "fact_s", "cont_s", "nfact", "steps", "iters", "rss_MB",
-              "travel_mm:F3d_kN/Faxi_kN/dF%/dFmean%/max|deps_t| ...");
+  std::printf("%-6s %-15s %5s %6s %8s %8s %8s %8s %6s %11s %6s %6s %8s  %s\n", "div", "rule",
+              "elem", "dofs", "wall_s", "asm_s", "fact_s", "cont_s", "nfact", "krylov", "steps",
+              "iters", "rss_MB", "travel_mm:F3d_kN/Faxi_kN/dF%/dFmean%/max|deps_t| ...");
   std::ofstream csv;
   if (!args.csv.empty()) {
     csv.open(args.csv);
@@ -324,7 +328,9 @@ int main(int argc, char** argv) {
                                         ? vs::ShellElementRule::kPaperSelective
                                         : vs::ShellElementRule::kMitc9;
       const auto t0 = std::chrono::steady_clock::now();
-      const vs::RunResult r = vs::shell3d::simulate_shell3d(scene);
+      vs::RunOptions run_options;
+      run_options.krylov_min_unknowns = args.krylov_min;
+      const vs::RunResult r = vs::shell3d::simulate_shell3d(scene, run_options);
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       const double rss = peak_rss_mb();
@@ -345,9 +351,10 @@ int main(int argc, char** argv) {
                              c.eps_thickness_deviation_diagonal);
         }
       }
-      std::printf("%-6d %-15s %5d %6d %8.2f %8.2f %8.2f %8.3f %6d %6zu %6d %8.1f %s%s\n", n,
+      std::printf("%-6d %-15s %5d %6d %8.2f %8.2f %8.2f %8.3f %6d %11s %6zu %6d %8.1f %s%s\n", n,
                   rule.c_str(), r.shell->mesh.num_elements(), r.dofs, wall, r.timings.assembly_s,
                   r.timings.linear_solve_s, r.timings.contact_s, r.timings.factorisations,
+                  fmt::format("{}/{}", r.timings.krylov_steps, r.timings.krylov_iterations).c_str(),
                   r.steps.size(), r.total_iterations, rss, devs.c_str(),
                   r.completed() ? "" : ("  FAILED: " + r.message).c_str());
       if (args.goal) {

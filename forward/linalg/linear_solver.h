@@ -5,6 +5,9 @@
 //   SparseCholeskySolver (linalg/sparse_spd_solver.h)       the 3D shell: CHOLMOD supernodal or
 //                                                         Eigen's SimplicialLDLT, analysis once
 // Only the problem knows the matrix type; the loop knows analyse / factorise / solve / info.
+// A solver may also solve the matrix the problem last assembled iteratively, preconditioned by
+// the factorisation it holds (of an earlier matrix): solve_preconditioned, the Krylov step of
+// solver/newton.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +28,17 @@ class LinearSolver {
   virtual double condition_estimate() const { return 1.0; }
   // Whether a factorisation is held (a solve may then start with chord steps on it).
   virtual bool has_factorization() const = 0;
+  // Solves A x = b for the matrix A the problem last assembled (not necessarily the one
+  // factorised) by preconditioned conjugate gradients, with the held factorisation as the
+  // preconditioner, from x = 0, until |b - A x| <= tolerance |b| within max_iterations. False if
+  // the solver cannot (the default), holds no factorisation, meets a direction of non-positive
+  // curvature, or does not converge; *iterations gets the iterations spent either way.
+  virtual bool solve_preconditioned(const Eigen::VectorXd& /*b*/, Eigen::VectorXd* /*x*/,
+                                    double /*tolerance*/, int /*max_iterations*/,
+                                    int* iterations) const {
+    *iterations = 0;
+    return false;
+  }
   // Short name for run.json ("block tridiagonal LDL^T", "CHOLMOD supernodal", ...).
   virtual std::string name() const = 0;
 };

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "linalg/linear_solver.h"
+#include "linalg/preconditioned_cg.h"
 #include "linalg/sparse_spd_solver.h"
 
 namespace vs {
@@ -18,11 +19,27 @@ class SparseCholeskySolver : public LinearSolver {
 
   bool factorize() override {
     if (solver_.analyses() == 0) solver_.analyze(*A_);
-    return solver_.factorize(*A_);
+    factorized_ = solver_.factorize(*A_);
+    return factorized_;
   }
   void solve_in_place(Eigen::VectorXd* b) const override {
     Eigen::VectorXd x = solver_.solve(*b);  // no aliasing of b in the solve
     b->swap(x);
+  }
+  // PCG on the lower triangle of the matrix (the part the factorisation reads) with the held
+  // factorisation as the preconditioner.
+  bool solve_preconditioned(const Eigen::VectorXd& b, Eigen::VectorXd* x, double tolerance,
+                            int max_iterations, int* iterations) const override {
+    *iterations = 0;
+    if (!factorized_) return false;
+    const PcgSummary sum = preconditioned_cg(
+        [this](const Eigen::VectorXd& p, Eigen::VectorXd* q) {
+          q->noalias() = A_->selfadjointView<Eigen::Lower>() * p;
+        },
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { *z = solver_.solve(r); }, b, x,
+        tolerance, max_iterations);
+    *iterations = sum.iterations;
+    return sum.converged;
   }
   // Analysed (and factorised at least once, successfully or not): what the chord start needs.
   bool has_factorization() const override { return solver_.analyses() > 0; }
@@ -35,6 +52,7 @@ class SparseCholeskySolver : public LinearSolver {
  private:
   SparseSpdSolver solver_;
   const SparseMatrix* A_ = nullptr;
+  bool factorized_ = false;  // the last factorisation succeeded
 };
 
 }  // namespace vs

@@ -30,7 +30,9 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"assembly_s", result.timings.assembly_s},
                   {"linear_solve_s", result.timings.linear_solve_s},
                   {"contact_s", result.timings.contact_s},
-                  {"factorisations", result.timings.factorisations}};
+                  {"factorisations", result.timings.factorisations},
+                  {"krylov_steps", result.timings.krylov_steps},
+                  {"krylov_iterations", result.timings.krylov_iterations}};
   // NaN (no step at all) becomes null in JSON.
   j["final_punch_travel_mm"] = s.final_punch_travel_mm;
   j["peak_punch_force_N"] = s.peak_punch_force_N;

@@ -73,6 +73,8 @@ struct RunTimings {
   double linear_solve_s = 0.0;  // factorisations and triangular solves (axisymmetric: the solves)
   double contact_s = 0.0;       // contact search, projection and the contact-event step
   int factorisations = 0;       // numeric factorisations (3D)
+  int krylov_steps = 0;         // Newton steps solved by preconditioned CG (solver/newton.h)
+  int krylov_iterations = 0;    // their CG iterations (and those of failed attempts)
 };
 
 // The 3D sheet at one instant (nodal fields of the meshed part).

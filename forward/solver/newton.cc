@@ -43,6 +43,9 @@ bool NewtonOptions::IsValid(std::string* why) const {
   if (!(chord_start >= 0.0 && chord_start < 1.0)) return fail("chord_start must be in [0, 1)");
   if (!(chord_contraction > 0.0 && chord_contraction < 1.0))
     return fail("chord_contraction must be in (0, 1)");
+  if (krylov_max_iterations < 0) return fail("krylov_max_iterations must be >= 0");
+  if (!(krylov_tolerance > 0.0 && krylov_tolerance < 1.0))
+    return fail("krylov_tolerance must be in (0, 1)");
   if (!(force_floor >= 0.0)) return fail("force_floor must be >= 0");
   return true;
 }
@@ -96,6 +99,22 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     dx = -r;
     linear.solve_in_place(&dx);
     sum.factorisation_s += since(t0);
+  };
+  // Whether the linear solver's factorisation fits this problem (a preconditioner for its
+  // matrices), and the Krylov step dx ~ -K^-1 r on it.
+  bool held = reuse_factorisation && linear.has_factorization();
+  auto krylov_solve = [&]() {
+    const auto t0 = Clock::now();
+    int iterations = 0;
+    // Forcing term of Dembo, Eisenstat and Steihaug (SIAM J. Numer. Anal. 19, 1982): a linear
+    // residual of sqrt(|r|/|f|) of the nonlinear one keeps Newton's convergence superlinear
+    // (order 1.5); far from the solution a loose solve is enough.
+    const double eta = std::clamp(std::sqrt(sum.residual_norm), options.krylov_tolerance, 0.5);
+    const bool ok =
+        linear.solve_preconditioned(-r, &dx, eta, options.krylov_max_iterations, &iterations);
+    sum.krylov_iterations += iterations;
+    sum.factorisation_s += since(t0);
+    return ok;
   };
 
   // Tangent weight: 0 = direct (secant) iteration, 1 = Newton.
@@ -178,13 +197,19 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       return sum;
     }
     sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
-    const bool factored = factorize();
-    if (factored)
-      sum.condition_estimate = std::max(sum.condition_estimate, linear.condition_estimate());
+    const bool krylov =
+        used_theta > 0.0 && held && options.krylov_max_iterations > 0 && krylov_solve();
+    bool factored = false;
+    if (!krylov) {
+      factored = factorize();
+      held = factored;
+      if (factored)
+        sum.condition_estimate = std::max(sum.condition_estimate, linear.condition_estimate());
+    }
     double alpha = 1.0;
     bool accepted = false;
-    if (used_theta > 0.0 && factored) {
-      solve();
+    if (used_theta > 0.0 && (factored || krylov)) {
+      if (!krylov) solve();
       problem.set_direction(*x, dx);
       // Armijo backtracking on the convex flow potential; in the round-off regime, or when the
       // full step already passes the convergence test below (it ends the solve without
@@ -244,7 +269,8 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       if (used_theta > 0.0) {
         scale = evaluate(0.0);
         sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
-        if (!factorize()) {
+        held = factorize();
+        if (!held) {
           sum.message = "secant matrix is not positive definite";
           return sum;
         }
@@ -262,6 +288,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       }
     } else {
       ++sum.newton_steps;
+      if (krylov) ++sum.krylov_steps;
     }
     *x += alpha * dx;
     problem.step_taken(alpha);
@@ -269,8 +296,8 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     last_update = alpha * dx.norm();
     sum.update_norm = relative(last_update, x->norm());
     if (options.verbose) {
-      std::fprintf(stderr, "    %4d  %.3f  %.3e   %.3e   %.3f\n", it, used_theta, sum.update_norm,
-                   sum.residual_norm, alpha);
+      std::fprintf(stderr, "    %4d  %.3f  %.3e   %.3e   %.3f%s\n", it, used_theta, sum.update_norm,
+                   sum.residual_norm, alpha, krylov ? "  krylov" : "");
     }
     if (finish_iteration(it)) return sum;
   }

@@ -24,6 +24,15 @@
 //                         previous one and passes the Armijo test; otherwise Newton resumes at
 //                         the same x. 0 disables chord steps. A solve may also start with chord
 //                         steps on an earlier solve's factorisation (reuse_factorisation).
+//   krylov_max_iterations where a Newton iteration would factorise its matrix and the linear
+//                         solver holds a factorisation that fits the problem (of an earlier
+//                         iteration, or of an earlier solve with reuse_factorisation), it first
+//                         solves the new matrix by conjugate gradients preconditioned with the
+//                         held factorisation (LinearSolver::solve_preconditioned), an inexact
+//                         Newton step: to the relative linear residual
+//                         eta = min(1/2, max(krylov_tolerance, sqrt(|r|/|f|))) (Dembo, Eisenstat
+//                         and Steihaug 1982: superlinear convergence of order 1.5), and
+//                         factorises only if that fails within this many iterations. 0 disables.
 // After an accepted iterate the problem updates quantities lagged by one iteration
 // (update_lagged: the normal forces of Coulomb friction); an evaluation in hand is brought up to
 // date by refresh() when the problem can do that more cheaply than a new evaluation.
@@ -87,7 +96,9 @@ struct NewtonOptions {
   bool full_step_evaluation = false;  // see the header comment
   double chord_start = 0.0;           // 0: no chord steps
   double chord_contraction = 0.5;
-  bool verbose = false;  // iteration table on stderr
+  int krylov_max_iterations = 0;   // 0: no Krylov steps
+  double krylov_tolerance = 1e-2;  // the smallest forcing term eta
+  bool verbose = false;            // iteration table on stderr
   // Absolute floor of the residual's scale [N]: ||r|| is measured against
   // max(||f_internal||, force_floor). A sheet that moves rigidly (a cup drawn through the die,
   // nothing left to deform) has internal forces at round-off, and round-off over round-off never
@@ -103,13 +114,15 @@ struct NewtonSummary {
   int iterations = 0;
   int newton_steps = 0;
   int picard_steps = 0;
-  int chord_steps = 0;  // steps on an earlier factorisation
+  int chord_steps = 0;        // steps on an earlier factorisation
+  int krylov_steps = 0;       // Newton steps solved by preconditioned CG instead of a factorisation
+  int krylov_iterations = 0;  // CG iterations, of successful and failed Krylov solves
   double update_norm = 0.0;
   double residual_norm = 0.0;
   // Largest LinearSolver::condition_estimate() of the Newton matrices factorised in this solve.
   double condition_estimate = 1.0;
-  // Work: time in evaluate / evaluate_residual / potential / refresh, time in factorisations and
-  // triangular solves, number of numeric factorisations.
+  // Work: time in evaluate / evaluate_residual / potential / refresh, time in factorisations,
+  // triangular solves and Krylov iterations, number of numeric factorisations.
   double assembly_s = 0.0;
   double factorisation_s = 0.0;
   int factorisations = 0;
