@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "quantiles.h"
 
@@ -104,6 +105,22 @@ std::string times(double ratio) {
   return fmt::format("{:.0f}", std::round(ratio / unit) * unit);
 }
 
+// The verdict of a data set: noise without a pattern, else structural when it is `large`,
+// negligible otherwise; with the matching text.
+void set_verdict(bool pattern, bool large, std::string noise, std::string structural,
+                 std::string negligible, LackOfFit* out) {
+  if (!pattern) {
+    out->verdict = LackOfFitVerdict::kNoise;
+    out->text = std::move(noise);
+  } else if (large) {
+    out->verdict = LackOfFitVerdict::kStructural;
+    out->text = std::move(structural);
+  } else {
+    out->verdict = LackOfFitVerdict::kNegligible;
+    out->text = std::move(negligible);
+  }
+}
+
 }  // namespace
 
 LackOfFit lack_of_fit(const std::vector<double>& normalised, const std::string& name,
@@ -113,24 +130,17 @@ LackOfFit lack_of_fit(const std::vector<double>& normalised, const std::string& 
   std::string tests;
   if (!run_tests(normalised, name, options, &out, &pattern, &tests)) return out;
   const std::string figures = fmt::format("{}, rms misfit {:.3g} sigma", tests, out.rms);
-  if (!pattern) {
-    out.verdict = LackOfFitVerdict::kNoise;
-    out.text = fmt::format("data set '{}': the misfit looks like noise ({})", name, figures);
-  } else if (out.rms >= options.min_rms) {
-    out.verdict = LackOfFitVerdict::kStructural;
-    out.text = fmt::format(
-        "data set '{}': the misfit is STRUCTURAL, not noise: {}. The model cannot follow the "
-        "shape of this curve, so the statistical intervals understate the uncertainty "
-        "([[model_form]] "
-        "alternatives give a model-form range)",
-        name, figures);
-  } else {
-    out.verdict = LackOfFitVerdict::kNegligible;
-    out.text = fmt::format(
-        "data set '{}': the residuals follow a pattern but are far below the stated sigma "
-        "({}): negligible",
-        name, figures);
-  }
+  set_verdict(pattern, out.rms >= options.min_rms,
+              fmt::format("data set '{}': the misfit looks like noise ({})", name, figures),
+              fmt::format("data set '{}': the misfit is STRUCTURAL, not noise: {}. The model "
+                          "cannot follow the shape of this curve, so the statistical intervals "
+                          "understate the uncertainty ([[model_form]] alternatives give a "
+                          "model-form range)",
+                          name, figures),
+              fmt::format("data set '{}': the residuals follow a pattern but are far below the "
+                          "stated sigma ({}): negligible",
+                          name, figures),
+              &out);
   return out;
 }
 
@@ -164,25 +174,20 @@ LackOfFit lack_of_fit_unstated(const std::vector<double>& difference,
       "No sigma was stated for this data set, so its size against the measurement noise is "
       "unknown (the default weighting, a fraction of the curve's range, is not a noise "
       "estimate; state sigma to judge it)";
-  if (!pattern) {
-    out.verdict = LackOfFitVerdict::kNoise;
-    out.text = fmt::format("data set '{}': the misfit looks like noise ({}; misfit {}). {}", name,
-                           tests, size, unknown);
-  } else if (out.rms >= options.min_resolutions) {
-    out.verdict = LackOfFitVerdict::kStructural;
-    out.text = fmt::format(
-        "data set '{}': the misfit is STRUCTURAL, not noise: {}. It is systematic, {}: far more "
-        "than the solver's convergence leaves, so the model cannot follow the shape of this "
-        "curve. {}. The statistical intervals, which take the residuals as independent, "
-        "understate the uncertainty ([[model_form]] alternatives give a model-form range)",
-        name, tests, size, unknown);
-  } else {
-    out.verdict = LackOfFitVerdict::kNegligible;
-    out.text = fmt::format(
-        "data set '{}': the residuals follow a pattern but stay within {:g} forward "
-        "resolutions ({}; misfit {}): the solver's convergence noise, negligible",
-        name, options.min_resolutions, tests, size);
-  }
+  set_verdict(
+      pattern, out.rms >= options.min_resolutions,
+      fmt::format("data set '{}': the misfit looks like noise ({}; misfit {}). {}", name, tests,
+                  size, unknown),
+      fmt::format("data set '{}': the misfit is STRUCTURAL, not noise: {}. It is systematic, {}: "
+                  "far more than the solver's convergence leaves, so the model cannot follow "
+                  "the shape of this curve. {}. The statistical intervals, which take the "
+                  "residuals as independent, understate the uncertainty ([[model_form]] "
+                  "alternatives give a model-form range)",
+                  name, tests, size, unknown),
+      fmt::format("data set '{}': the residuals follow a pattern but stay within {:g} forward "
+                  "resolutions ({}; misfit {}): the solver's convergence noise, negligible",
+                  name, options.min_resolutions, tests, size),
+      &out);
   return out;
 }
 

@@ -232,22 +232,32 @@ struct JitteredStretchingFake {
   }
 };
 
-TEST(LackOfFitFit, NoiseFreeSyntheticAtDefaultSigmaIsQuiet) {
-  const fs::path dir = scratch_dir();
-  const fs::path scene_file = write_scene(dir);
-  Scene scene = load_scene(scene_file.string());
+// Noise-free synthetic data of `fake` (the load curve to 25 mm and the thickness strain at
+// 25 mm) from the test scene written into a scratch folder; `tolerance` > 0 is the scene's solver
+// tolerance for the run.
+template <class Fake>
+std::vector<Measurement> stretching_data(const Fake& fake, fs::path* scene_file,
+                                         double tolerance = 0.0) {
+  *scene_file = write_scene(scratch_dir());
+  Scene scene = load_scene(scene_file->string());
   scene.process.output_travels_mm = {15.0, 25.0};
-  CalibrationConfig config;
-  scene.numerics.tolerance = config.forward.tolerance;
-  const RunResult run = JitteredStretchingFake{}(scene);
+  if (tolerance > 0.0) scene.numerics.tolerance = tolerance;
+  const RunResult run = fake(scene);
   std::vector<double> travels, radii;
   for (int i = 1; i <= 25; ++i) travels.push_back(i);
   for (int i = 0; i <= 20; ++i) radii.push_back(2.0 * i);
-  const auto data = make_synthetic_measurements(
+  return make_synthetic_measurements(
       scene, run,
       {{MeasurementKind::kLoadTravel, "load", 0.0, travels, 0.0, 0.0},
        {MeasurementKind::kThicknessStrain, "thick_25", 25.0, radii, 0.0, 0.0}},
       1);
+}
+
+TEST(LackOfFitFit, NoiseFreeSyntheticAtDefaultSigmaIsQuiet) {
+  CalibrationConfig config;
+  fs::path scene_file;
+  const auto data =
+      stretching_data(JitteredStretchingFake{}, &scene_file, config.forward.tolerance);
   config.scenes = {{"scene", scene_file.string(), "test"}};
   config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1),
                        param("material.hardening.K_MPa", 400.0, 100.0, 2000.0, 500.0)};
@@ -269,19 +279,8 @@ TEST(LackOfFitFit, NoiseFreeSyntheticAtDefaultSigmaIsQuiet) {
 }
 
 TEST(LackOfFitFit, NoiseFreeSyntheticStretchingIsNotStructural) {
-  const fs::path dir = scratch_dir();
-  const fs::path scene_file = write_scene(dir);
-  Scene scene = load_scene(scene_file.string());
-  scene.process.output_travels_mm = {15.0, 25.0};
-  const RunResult run = StretchingFake{}(scene);
-  std::vector<double> travels, radii;
-  for (int i = 1; i <= 25; ++i) travels.push_back(i);
-  for (int i = 0; i <= 20; ++i) radii.push_back(2.0 * i);
-  const auto data = make_synthetic_measurements(
-      scene, run,
-      {{MeasurementKind::kLoadTravel, "load", 0.0, travels, 0.0, 0.0},
-       {MeasurementKind::kThicknessStrain, "thick_25", 25.0, radii, 0.0, 0.0}},
-      1);
+  fs::path scene_file;
+  const auto data = stretching_data(StretchingFake{}, &scene_file);
   CalibrationConfig config;
   config.scenes = {{"scene", scene_file.string(), "test"}};
   config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1),
