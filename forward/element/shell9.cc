@@ -1,5 +1,6 @@
 #include "element/shell9.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -454,6 +455,12 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st,
       n = n_full = a.m + (A * dd / 3.0 - a.n * a.m.dot(dd)) / a.eh;
       const double norm2 = shell9_dual_norm_squared(mat, fr, n);
       if (norm2 > 1.0) n /= std::sqrt(norm2);
+    }
+    if (mat.planar != nullptr && !mat.planar->quadratic) {
+      // Yld2000-2d: D(n) is positive semi-definite for n in the ellipsoid 3 n^T M^-1 n <= 1 of
+      // the point's own M, not for the whole unit ball sigma_bar(n) <= 1 (shell9.h).
+      const double ellipsoid2 = 3.0 * n.dot(A.llt().solve(n));
+      if (ellipsoid2 > 1.0) n /= std::sqrt(ellipsoid2);
     }
     rec.n = n;
     rec.n_full = n_full;

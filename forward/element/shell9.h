@@ -65,6 +65,22 @@ struct Shell9Material {
 // and n = n_full scaled back onto the ball |n|_* = sqrt(3 n^T A^-1 n) <= 1 (|m|_* = e / eh < 1).
 // D(n) is positive semi-definite for |n|_*, |m|_* <= 1 (flow_direction.h). Without an anchor
 // n = 0; the caller may also prescribe n (dual_given: a damped step of the duals).
+// Yld2000-2d (no closed-form dual, M = 3 T^T H T per point from the local solve, a = M d = 3 e m,
+// dual_potential.h): the proof of flow_direction.h holds in the metric of the point's own M, so
+// n (given or linearised) is also scaled into the ellipsoid 3 n^T M^-1 n <= 1. In material axes
+// (y = T x, n_m = T^-T n) and with c = -f / (9 eh^3) (the rate-independent part; the hardening
+// part only adds (hv/3) M):
+//   x^T D x = (f / eh) [y^T H y - w (e / eh) (y . n_m)(y . m)],
+// and by Cauchy-Schwarz in the H metric |y . v| <= sqrt(y^T H y) sqrt(v^T H^-1 v), where
+// H^-1 = K(m) = n(m) n(m)^T + sigma_bar d^2sigma_bar/ds^2 (m) (dual_potential.h) gives
+// m^T K m = 1 and n_m^T K n_m = 3 n^T M^-1 n: D(n) >= 0 for w <= 1 inside the ellipsoid. The
+// unit ball sigma_bar(n) <= 1 is not inside it for a non-quadratic criterion: sigma_bar^2 / 2
+// curves less away from m than its Hessian K(m) at m, most at a sharply curved m (a = 8, the
+// equibiaxial point: n^T K(m) n up to 5 on the unit ball), and there D(n) was indefinite (the
+// r45 0.292, r90 0.724 cup of experiments/10_earing: points with 3 n^T M^-1 n = 3.1-3.3, an
+// indefinite Newton matrix, an ascent step, and a first step that cycled for 100 iterations).
+// The consistent dual n = (e / eh) m lies inside (3 n^T M^-1 n = (e / eh)^2), so Newton's
+// tangent is unchanged; for Hill 1948 the ellipsoid is the ball itself.
 struct Shell9FlowDirection {
   Vec3 d = Vec3::Zero();       // in-plane rate of the evaluation
   Vec3 m = Vec3::Zero();       // its flow direction A d / (3 eh) (0 for a constant viscosity)

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -289,6 +290,82 @@ TEST(PlanarAnisotropy3d, TangentAndForceAreDerivatives) {
     }
     EXPECT_LT((out.stiffness - out.stiffness.transpose()).norm(), 1e-12 * out.stiffness.norm());
   }
+}
+
+// The primal-dual tangent (shell9.h) with Yld2000-2d: for any dual n it is given (here: on the
+// unit ball sigma_bar(n) = 1), the point tangent D(n) = mu M + 3 w eh c sym(n (M d)^T) must stay
+// positive semi-definite, or the assembled Newton matrix is indefinite and its step climbs the
+// flow potential (the first step of the r45 0.292, r90 0.724 cup of experiments/10_earing looped
+// on that). Adversarial case: equibiaxial stretching (m at the sharply curved equibiaxial point of
+// the a = 8 locus) with n the pure-shear point of the unit ball, where n^T K(m) n = 5.3 (K the
+// Hessian of sigma_bar^2 / 2 at m): unscaled, the point's D has eigenvalues -0.010 to 1 (relative)
+// and the element's stiffness -1.1e-4 to 1.
+// The consistent dual (n = m e / eh, inside the local ellipsoid) must be left as it is.
+TEST(PlanarAnisotropy3d, Yld2000PrimalDualTangentStaysPositiveSemiDefinite) {
+  AnisotropySpec spec = yld2000_tuat();  // UA yield-stress ratios, the failing r-values
+  spec.r0 = 0.525;
+  spec.r45 = 0.292;
+  spec.r90 = 0.724;
+  spec.sigma45_ratio = 0.867;
+  spec.sigma90_ratio = 0.926;
+  spec.sigma_b_ratio = 0.975;
+  const auto planar = make_planar_anisotropy(spec, "test");
+  const ViscousLaw law = rigid_plastic();
+  const HillPlaneStressLaw hill(law);
+  Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
+  mat.planar = planar.get();
+  const FlatElement el = flat_element(0.0, 0.0, Eigen::Matrix2d::Identity());  // local = material
+  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
+  const auto np = static_cast<std::size_t>(shell9_inplane_points(Shell9Rule::kMitc9) * 3);
+  std::vector<double> sy(np, 1.0), hv(np, 0.0);
+  const Eigen::VectorXd q = uniform_rate(el.g, Eigen::Matrix2d::Identity());  // equibiaxial
+  auto min_eigenvalue = [](const Eigen::MatrixXd& K) {
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
+    return ev(0) / ev(ev.size() - 1);
+  };
+  const PlaneVector shear(0.0, 0.0, 1.0);
+  std::vector<Vec3> given(np, Vec3(shear / planar->yield->effective_stress(shear)));
+  std::vector<Shell9FlowDirection> record(np);
+  Shell9State st{sy.data(), hv.data()};
+  st.dual_given = given.data();
+  st.dual_record = record.data();
+  Shell9Output out;
+  shell9_evaluate(el.g, Shell9Rule::kMitc9, thick, mat, st, q, Shell9Stiffness::kTangent, &out);
+  EXPECT_GT(min_eigenvalue(out.stiffness), -1e-12);
+  for (const Shell9FlowDirection& r : record) {  // n scaled into the local ellipsoid
+    EXPECT_LT(r.n.norm(), given[0].norm());
+    EXPECT_GT(r.n.norm(), 0.0);
+  }
+  // n = the recorded m (the consistent tangent, on the ellipsoid's surface for e / eh = 1 in
+  // double precision): untouched up to round-off, the tangent without duals.
+  for (std::size_t k = 0; k < np; ++k) given[k] = record[k].m;
+  shell9_evaluate(el.g, Shell9Rule::kMitc9, thick, mat, st, q, Shell9Stiffness::kTangent, &out);
+  for (std::size_t k = 0; k < np; ++k)
+    EXPECT_LT((record[k].n - given[k]).norm(), 1e-12 * given[k].norm()) << k;
+  Shell9Output plain;
+  const Shell9State no_duals{sy.data(), hv.data()};
+  shell9_evaluate(el.g, Shell9Rule::kMitc9, thick, mat, no_duals, q, Shell9Stiffness::kTangent,
+                  &plain);
+  EXPECT_LT((out.stiffness - plain.stiffness).norm(), 1e-12 * plain.stiffness.norm());
+  EXPECT_GT(min_eigenvalue(plain.stiffness), -1e-12);
+}
+
+// The calibration run that failed (experiments/10_earing, "One run failed"): the ESAFORM cup with
+// Yld2000-2d at r45 0.292, r90 0.724 (UA yield-stress ratios, r_b 1), whose first step cycled for
+// 100 iterations at |r|/|f| = 7.6e-2 with the unprojected duals. Now it converges with Newton
+// steps only (measured: 25 iterations, 0 direct); a short draw (0.05 mm, about 3 s).
+TEST(PlanarAnisotropy3d, Yld2000CalibrationCupFirstStepConverges) {
+  Scene s = load_scene(std::string(VS_SOURCE_DIR) +
+                       "/data/calibration/esaform_cup_3d_yld2000_quarter.toml");
+  s.material.anisotropy.r45 = 0.292;
+  s.material.anisotropy.r90 = 0.724;
+  s.process.punch_travel_mm = 0.05;
+  s.process.output_travels_mm = {0.05};
+  const RunResult run = simulate_shell3d(s);
+  ASSERT_TRUE(run.completed()) << run.message;
+  ASSERT_FALSE(run.steps.empty());
+  std::cout << "[ measured ] first step " << run.steps.front().iterations << " iterations\n";
+  EXPECT_LE(run.steps.front().iterations, 40);
 }
 
 // The same in a forming run (ex4a, 2 divisions, 3 mm): the Newton iterates differ by round-off
