@@ -477,6 +477,21 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
                                                 : kDefaultNoiseFloorFactor);
   ForwardCache cache(std::move(model), std::move(bindings), config.parameters, std::move(pipeline),
                      config.optimizer.threads);
+  // A line per forward evaluation that takes a while, so that a long fit shows its progress
+  // between the optimiser's iteration lines; quick ones stay silent.
+  cache.set_on_evaluation([&](const Evaluation& e) {
+    if (!options.progress || e.wall_time_s < options.progress_evaluation_s) return;
+    std::string values;
+    for (std::size_t i = 0; i < cache.free_indices().size(); ++i) {
+      values +=
+          fmt::format("{}{} {:.6g}", i == 0 ? "" : ", ",
+                      cache.parameters()[static_cast<std::size_t>(cache.free_indices()[i])].address,
+                      e.x[static_cast<Eigen::Index>(i)]);
+    }
+    say(fmt::format("  evaluation {}: {}: {} ({:.1f} s of forward runs)", e.index + 1, values,
+                    e.ok ? fmt::format("cost {:.6g}", e.cost) : "failed: " + e.message,
+                    e.wall_time_s));
+  });
   Objective objective(&cache, config.optimizer.fd);
   say(fmt::format("calibrate: {} free parameters, {} residuals, {} scene(s), {} thread(s)",
                   objective.num_parameters(), objective.num_residuals(),

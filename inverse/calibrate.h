@@ -18,6 +18,9 @@ namespace vs {
 struct CalibrationOptions {
   // Progress lines (one per optimiser iteration, plus a few stage lines). Empty = silent.
   std::function<void(const std::string&)> progress;
+  // Also a progress line for every forward evaluation whose runs took at least this long in
+  // total [s] (3D runs take minutes, and an iteration needs several).
+  double progress_evaluation_s = 2.0;
   bool write_report = true;
   // Replaces config.output_directory when not empty (vshell calibrate -o DIR).
   std::string output_directory;

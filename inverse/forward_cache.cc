@@ -132,6 +132,7 @@ std::vector<std::shared_ptr<const Evaluation>> ForwardCache::evaluate_batch(
     }
     memo_[key_of(evaluation->x)] = evaluation;
     log_.push_back(evaluation);
+    if (on_evaluation_) on_evaluation_(*evaluation);
   }
 
   std::vector<std::shared_ptr<const Evaluation>> out;

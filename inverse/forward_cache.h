@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -42,6 +43,11 @@ class ForwardCache {
   std::vector<std::shared_ptr<const Evaluation>> evaluate_batch(
       const std::vector<Eigen::VectorXd>& points);
 
+  // Called on the optimiser's thread for every new evaluation, in log order (progress lines).
+  void set_on_evaluation(std::function<void(const Evaluation&)> on_evaluation) {
+    on_evaluation_ = std::move(on_evaluation);
+  }
+
   const std::vector<std::shared_ptr<const Evaluation>>& log() const { return log_; }
   int forward_runs() const { return forward_runs_; }  // scene runs started
   int failed_evaluations() const { return failed_evaluations_; }
@@ -65,6 +71,7 @@ class ForwardCache {
   std::vector<std::shared_ptr<const Evaluation>> log_;
   int forward_runs_ = 0;
   int failed_evaluations_ = 0;
+  std::function<void(const Evaluation&)> on_evaluation_;
 };
 
 }  // namespace vs

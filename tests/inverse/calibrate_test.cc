@@ -362,6 +362,28 @@ TEST(Calibrate, ProgressLinePerIteration) {
     }
   }
   EXPECT_EQ(iteration_lines, result.iterations + 1);  // iteration 0 is the start
+  // The fake runs take microseconds: no line per evaluation at the default threshold.
+  for (const auto& l : lines) EXPECT_EQ(l.find("  evaluation "), std::string::npos) << l;
+}
+
+// Slow forward runs (3D) get a line per evaluation: its values, its cost and its run time.
+TEST(Calibrate, ProgressLinePerSlowEvaluation) {
+  const fs::path dir = scratch_dir();
+  auto config = stretching_config(dir, Truth{}, 0.0, 1, 0.8);
+  std::vector<std::string> lines;
+  CalibrationOptions options = quiet();
+  options.progress = [&](const std::string& line) { lines.push_back(line); };
+  options.progress_evaluation_s = 0.0;  // every evaluation counts as slow
+  const auto result = calibrate(config, options, StretchingFake{});
+  std::vector<std::string> evaluation_lines;
+  for (const auto& l : lines) {
+    if (l.rfind("  evaluation ", 0) == 0) evaluation_lines.push_back(l);
+  }
+  ASSERT_EQ(evaluation_lines.size(), result.evaluations.size());
+  EXPECT_EQ(evaluation_lines.front().rfind("  evaluation 1: tool.punch.friction ", 0), 0u)
+      << evaluation_lines.front();
+  EXPECT_NE(evaluation_lines.front().find("cost "), std::string::npos);
+  EXPECT_NE(evaluation_lines.front().find(" s of forward runs)"), std::string::npos);
 }
 
 }  // namespace
