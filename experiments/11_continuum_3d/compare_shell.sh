@@ -1,7 +1,7 @@
 #!/bin/bash
 # Run vshell on ex4b (divisions 8 and 16; rigid-plastic and with the elastic correction) and
-# compare each run with the CalculiX references of results/: writes results/comparison.csv,
-# results/vshell_times.csv and keeps each vshell run's load_travel.csv and x/diagonal strain
+# compare each run with the CalculiX references of results/ (compare_all.sh: results/comparison.csv);
+# writes results/vshell_times.csv and keeps each vshell run's load_travel.csv and x/diagonal strain
 # profiles in results/vshell_<label>/.
 # Usage (from anywhere): compare_shell.sh [VSHELL]   (default: build/app/vshell of this tree)
 set -euo pipefail
@@ -14,7 +14,6 @@ common=(--set numerics.time_integration=implicit --set numerics.max_travel_incre
         --set numerics.contact_events=false)
 elastic=(--set material.elastic.law=isotropic --set material.elastic.E_MPa=210000
          --set material.elastic.nu=0.3)
-rm -f "$here/results/comparison.csv"
 echo "label,divisions,elastic,wall_s,load_1min" > "$here/results/vshell_times.csv"
 for n in 8 16; do
   for el in rigid elastic; do
@@ -28,12 +27,8 @@ for n in 8 16; do
     printf "%s,%s,%s,%.1f,%s\n" "$label" "$n" "$el" "$(echo "$end - $start" | bc)" "$load" >> "$here/results/vshell_times.csv"
     mkdir -p "$here/results/vshell_$label"
     cp "$tmp/$label/load_travel.csv" "$tmp/$label"/strains_travel_*mm_x.csv "$tmp/$label"/strains_travel_*mm_diagonal.csv "$here/results/vshell_$label/"
-    for ref in "$here"/results/ex4b_n*_l*; do
-      [ -f "$ref/load_travel.csv" ] || continue
-      python3 "$here/compare.py" "$ref" "$here/results/vshell_$label" \
-        --label "vshell_${label}_vs_$(basename "$ref")" --csv "$here/results/comparison.csv"
-    done
   done
 done
 rm -rf "$tmp" "$tmp".*.log
 cat "$here/results/vshell_times.csv"
+"$here/compare_all.sh"

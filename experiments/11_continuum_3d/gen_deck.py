@@ -16,9 +16,9 @@ face at travel 0. Quarter x, y >= 0 with symmetry planes x = 0 and y = 0.
 * Punch: rigid, as in 08: one layer (1 mm deep, radially inwards) of C3D20 elements behind the
   spherical surface, every node with the prescribed displacement (travel along +z); the punch
   force is the sum of the reactions of the punch nodes, times 4 for the whole blank (post.py).
-  The surface is the quarter cap up to the plan radius `punch_plan_radius_mm` (45 mm by
-  default: the contact reaches ~25-35 mm at 20 mm of travel), meshed by the concentric
-  square-to-disc map, all nodes (midsides too) on the sphere.
+  The surface is the part of the quarter cap above the plan square [0, 35 mm]^2 (the contact
+  reaches about 20-25 mm at 20 mm of travel; post.py's punch_gap_mm shows it), a plan grid lifted
+  onto the sphere, all nodes (midsides too) on it.
 * Contact: face-to-face penalty (SURFACE TO SURFACE, as in 08), slave = sheet lower face, master
   = punch surface; linear pressure-overclosure; "sticking" = Coulomb friction with a large
   coefficient (`--friction`, 1.0 by default) and a stiff stick slope.
@@ -111,18 +111,23 @@ def write_deck(a, out):
             for ei in range(n):
                 sheet_el[ei, ej, l] = d.elem(brick(g, 2 * ei, 2 * ej, 2 * l))
 
-    # ---- punch: surface grid (p, q) = 0..2m on [0, 1]^2, mapped to the quarter disc of plan
-    # radius rp by the concentric map (the square of side s goes to the circle of radius s rp),
-    # then lifted onto the sphere; the inner layer lies 1 mm deeper along the sphere's radius.
-    m, rp, depth = a.punch_divisions, a.punch_plan_radius_mm, 1.0
+    # ---- punch: surface grid (p, q) = 0..2m on [0, 1]^2, mapped to the plan square [0, rp]^2
+    # ("cartesian", default) or to the quarter disc of radius rp by the concentric map (the
+    # square of side s goes to the circle of radius s rp), then lifted onto the sphere; the inner
+    # layer lies 1 mm deeper along the sphere's radius. The concentric map distorts the faces
+    # near the pole, whose quadratic interpolation then misses the sphere by ~0.002 mm there (the
+    # sphere is quadratic in x, y, not in the face coordinates): contact chatter at 7.5 mm
+    # (README). The cartesian faces represent z = zc + sqrt(R^2 - x^2 - y^2) to O(x^4 / R^3).
+    m, depth = a.punch_divisions, 1.0
+    rp = a.punch_plan_size_mm
     zc = -0.5 * h0 - R  # sphere centre: the apex touches the lower face at travel 0
 
     def punch_point(u, v, k):
-        s = max(u, v)
-        if s == 0.0:
-            x, y = 0.0, 0.0
+        if a.punch_map == "cartesian":
+            x, y = rp * u, rp * v
         else:
-            f = rp * s / math.hypot(u, v)
+            s = max(u, v)
+            f = 0.0 if s == 0.0 else rp * s / math.hypot(u, v)
             x, y = f * u, f * v
         z = zc + math.sqrt(R * R - x * x - y * y)
         rad = R - depth * (2 - k) / 2.0  # k = 2: surface, k = 0: 1 mm inside
@@ -214,7 +219,9 @@ def main():
                    help="punch friction coefficient ('sticking': a large value)")
     p.add_argument("--punch-divisions", type=int, default=16,
                    help="punch surface elements per quarter side (concentric map)")
-    p.add_argument("--punch-plan-radius-mm", type=float, default=45.0)
+    p.add_argument("--punch-map", default="cartesian", choices=["cartesian", "concentric"])
+    p.add_argument("--punch-plan-size-mm", type=float, default=35.0,
+                   help="plan half side (cartesian) or radius (concentric) of the punch surface")
     p.add_argument("--travel", type=float, default=20.0, help="final punch travel [mm]")
     p.add_argument("--penalty", type=float, default=2.0e5, help="contact penalty [MPa/mm]")
     p.add_argument("--stick-slope", type=float, default=2.0e4, help="friction stick slope [MPa/mm]")
