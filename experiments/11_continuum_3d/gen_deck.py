@@ -20,8 +20,8 @@ face at travel 0. Quarter x, y >= 0 with symmetry planes x = 0 and y = 0.
   reaches about 20-25 mm at 20 mm of travel; post.py's punch_gap_mm shows it), a plan grid lifted
   onto the sphere, all nodes (midsides too) on it.
 * Contact: face-to-face penalty (SURFACE TO SURFACE, as in 08), slave = sheet lower face, master
-  = punch surface; linear pressure-overclosure; "sticking" = Coulomb friction with a large
-  coefficient (`--friction`, 1.0 by default) and a stiff stick slope.
+  = punch surface; linear pressure-overclosure 5e4 MPa/mm; "sticking" = Coulomb friction with a
+  large coefficient (`--friction`, 1.0 by default) and a stick slope of 5e3 MPa/mm.
 * Material: E 210 GPa, nu 0.3 (as 08 for the ex1 steel), von Mises, Swift hardening as a
   *PLASTIC table, NLGEOM, rate-independent.
 * One static step, punch ramped to the final travel; reactions of the punch and displacements of
@@ -223,8 +223,9 @@ def main():
     p.add_argument("--punch-plan-size-mm", type=float, default=35.0,
                    help="plan half side (cartesian) or radius (concentric) of the punch surface")
     p.add_argument("--travel", type=float, default=20.0, help="final punch travel [mm]")
-    p.add_argument("--penalty", type=float, default=2.0e5, help="contact penalty [MPa/mm]")
-    p.add_argument("--stick-slope", type=float, default=2.0e4, help="friction stick slope [MPa/mm]")
+    p.add_argument("--penalty", type=float, default=5.0e4,
+                   help="contact penalty [MPa/mm] (08 used 2e5: diverged here, README)")
+    p.add_argument("--stick-slope", type=float, default=5.0e3, help="friction stick slope [MPa/mm]")
     p.add_argument("--first-increment-mm", type=float, default=0.05)
     p.add_argument("--max-increment-mm", type=float, default=0.25)
     p.add_argument("--max-increments", type=int, default=2000)
