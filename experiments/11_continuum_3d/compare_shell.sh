@@ -1,0 +1,34 @@
+#!/bin/bash
+# Run vshell on ex4b (divisions 8 and 16; rigid-plastic and with the elastic correction) and
+# compare each run with the CalculiX references of results/ (compare_all.sh: results/comparison.csv);
+# writes results/vshell_times.csv and keeps each vshell run's load_travel.csv and x/diagonal strain
+# profiles in results/vshell_<label>/.
+# Usage (from anywhere): compare_shell.sh [VSHELL]   (default: build/app/vshell of this tree)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+vshell=${1:-$root/build/app/vshell}
+scene=$root/data/scenes/ex4b_square_clamped.toml
+tmp=${TMPDIR:-/tmp}/vshell_ex4b_$$
+common=(--set numerics.time_integration=implicit --set numerics.max_travel_increment_per_length=0.25
+        --set numerics.contact_events=false)
+elastic=(--set material.elastic.law=isotropic --set material.elastic.E_MPa=210000
+         --set material.elastic.nu=0.3)
+echo "label,divisions,elastic,wall_s,load_1min" > "$here/results/vshell_times.csv"
+for n in 8 16; do
+  for el in rigid elastic; do
+    label=n${n}_${el}
+    extra=()
+    [ "$el" = elastic ] && extra=("${elastic[@]}")
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    start=$(date +%s.%N)
+    "$vshell" run "$scene" --set blank.divisions=$n "${common[@]}" "${extra[@]}" -o "$tmp/$label" > "$tmp.$label.log" 2>&1
+    end=$(date +%s.%N)
+    printf "%s,%s,%s,%.1f,%s\n" "$label" "$n" "$el" "$(echo "$end - $start" | bc)" "$load" >> "$here/results/vshell_times.csv"
+    mkdir -p "$here/results/vshell_$label"
+    cp "$tmp/$label/load_travel.csv" "$tmp/$label"/strains_travel_*mm_x.csv "$tmp/$label"/strains_travel_*mm_diagonal.csv "$here/results/vshell_$label/"
+  done
+done
+rm -rf "$tmp" "$tmp".*.log
+cat "$here/results/vshell_times.csv"
+"$here/compare_all.sh"

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""Read a CalculiX .dat written by a gen_deck.py deck (ex4b 3D quarter) and write the result CSVs.
+
+  <out>/load_travel.csv                    punch_travel_mm, punch_force_N (whole blank: 4 x the
+                                           quarter's punch reaction; every converged increment)
+  <out>/strains_travel_<T>mm_<line>.csv    x0_mm, y0_mm, r0_mm, r_mm, z_mm, thickness_mm,
+                                           eps_thickness at the output travels, line = x (y = 0),
+                                           y (x = 0), diagonal (x = y), punch_gap_mm
+  <out>/strains_travel_final_<line>.csv    the same at the last converged increment if the run
+                                           stopped before its final travel (travel in a comment)
+
+Punch travel = step time x final travel (one step, linear ramp). The strains at an output travel
+come from the face-node displacements interpolated linearly between the two increments around it.
+
+Thickness at a through-thickness material line (lower face node b, upper face node t; r0 its
+initial distance from the punch axis along the line): the line lies in a symmetry plane (x = 0,
+y = 0, or x = y), so the mid-surface normal lies in that plane too; with s the coordinate along
+the line's plane (s = x, y or (x + y) / sqrt 2) the mid-surface curve is (s, z) through the
+mid-points m = (b + t) / 2, n its unit normal from the neighbouring mid-points, thickness
+h = |(t - b) . n| (as the shell measures thickness, and as 08's post.py), eps_thickness =
+ln(h / h0), which includes the elastic part. punch_gap_mm: distance of the lower face node from
+the punch sphere (negative: penetration; ~0: in contact). Python 3 standard library only.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+
+R_PUNCH = 50.8  # data/scenes/ex4b_square_clamped.toml
+LINES = {"LINEX": "x", "LINEY": "y", "LINED": "diagonal"}
+
+
+def parse_deck(path):
+    nodes, sets, travel_end, h0, outputs = {}, {}, None, None, None
+    mode = None
+    with open(path) as f:
+        for ln in f.read().splitlines():
+            m = re.match(r"\*\* punch travel (\S+) -> (\S+) mm", ln)
+            if m:
+                travel_end = float(m.group(2))
+                continue
+            m = re.match(r"\*\* output travels (.*)", ln)
+            if m:
+                outputs = [float(x) for x in m.group(1).split()]
+                continue
+            m = re.match(r"\*\* case .* thickness (\S+) mm", ln)
+            if m:
+                h0 = float(m.group(1))
+            if ln.startswith("*"):
+                up = ln.upper().replace(" ", "")
+                mode = None
+                if up.startswith("*NODE,NSET=NALL"):
+                    mode = "node"
+                for s in LINES:
+                    if up == f"*NSET,NSET={s}":
+                        mode = s
+                        sets[s] = []
+                continue
+            if mode == "node":
+                p = ln.split(",")
+                nodes[int(p[0])] = tuple(float(x) for x in p[1:4])
+            elif mode in LINES:
+                sets[mode] += [int(x) for x in ln.split(",") if x.strip()]
+    return nodes, sets, travel_end, h0, outputs
+
+
+def parse_dat(path):
+    """Blocks: list of (kind, set, time, rows)."""
+    blocks, cur = [], None
+    with open(path) as f:
+        for ln in f:
+            m = re.match(r"\s*(total force|displacements) \(.*\) for set (\S+) and time\s+(\S+)",
+                         ln)
+            if m:
+                cur = (m.group(1), m.group(2), float(m.group(3)), [])
+                blocks.append(cur)
+                continue
+            if cur is not None and ln.strip():
+                try:
+                    cur[3].append([float(x) for x in ln.split()])
+                except ValueError:
+                    cur = None
+    return blocks
+
+
+def line_coord(line, x, y):
+    return {"x": x, "y": y, "diagonal": (x + y) / math.sqrt(2.0)}[line]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("deck")
+    p.add_argument("dat")
+    p.add_argument("-o", "--out", required=True)
+    a = p.parse_args()
+    nodes, sets, T_end, h0, outputs = parse_deck(a.deck)
+    blocks = parse_dat(a.dat)
+    os.makedirs(a.out, exist_ok=True)
+
+    with open(os.path.join(a.out, "load_travel.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["punch_travel_mm", "punch_force_N"])
+        w.writerow(["0", "0"])
+        for kind, _, time, rows in blocks:
+            if kind == "total force":
+                w.writerow([f"{time * T_end:.5f}", f"{4.0 * rows[0][2]:.3f}"])
+
+    for sname, line in LINES.items():
+        ids = sets[sname]
+        cols = [(ids[2 * k], ids[2 * k + 1]) for k in range(len(ids) // 2)]
+        incs = [(0.0, None)] + [(time * T_end, {int(r[0]): r[1:4] for r in rows})
+                                for kind, s, time, rows in blocks
+                                if kind == "displacements" and s == sname]
+        last = incs[-1][0]
+        outs = list(outputs)
+        if 0.0 < last < outputs[-1] - 1e-6:  # the run stopped early: also its last state
+            outs.append(last)
+        for T in outs:
+            hit = [k for k in range(1, len(incs)) if incs[k - 1][0] <= T + 1e-9 <= incs[k][0] + 2e-9]
+            if not hit:
+                continue
+            (t0, U0), (t1, U1) = incs[hit[0] - 1], incs[hit[0]]
+            wgt = 1.0 if t1 - t0 < 1e-12 else (T - t0) / (t1 - t0)
+
+            def pos(i):
+                u0 = U0[i] if U0 is not None else (0.0, 0.0, 0.0)
+                u = [u0[c] + wgt * (U1[i][c] - u0[c]) for c in range(3)]
+                x = nodes[i]
+                return (line_coord(line, x[0] + u[0], x[1] + u[1]), x[2] + u[2])
+
+            # punch sphere centre at travel T, in the line's (s, z) plane (it is on the axis)
+            zc = -0.5 * h0 - R_PUNCH + T
+
+            mids = []
+            for b, t in cols:
+                pb, pt = pos(b), pos(t)
+                mids.append(((pb[0] + pt[0]) / 2, (pb[1] + pt[1]) / 2, pb, pt))
+            early = T == last and T not in outputs
+            fname = (f"strains_travel_final_{line}.csv" if early
+                     else f"strains_travel_{T:g}mm_{line}.csv")
+            with open(os.path.join(a.out, fname), "w", newline="") as f:
+                w = csv.writer(f)
+                if early:
+                    f.write(f"# punch_travel_mm={T:.4f} (the run stopped here)\n")
+                w.writerow(["x0_mm", "y0_mm", "r0_mm", "r_mm", "z_mm", "thickness_mm",
+                            "eps_thickness", "punch_gap_mm"])
+                for q, (ms, mz, pb, pt) in enumerate(mids):
+                    lo, hi = max(0, q - 1), min(len(mids) - 1, q + 1)
+                    ts, tz = mids[hi][0] - mids[lo][0], mids[hi][1] - mids[lo][1]
+                    tn = math.hypot(ts, tz)
+                    ns, nz = -tz / tn, ts / tn
+                    h = abs((pt[0] - pb[0]) * ns + (pt[1] - pb[1]) * nz)
+                    x0, y0 = nodes[cols[q][0]][0], nodes[cols[q][0]][1]
+                    w.writerow([f"{x0:.4f}", f"{y0:.4f}", f"{math.hypot(x0, y0):.4f}",
+                                f"{ms:.4f}", f"{mz:.4f}", f"{h:.6f}", f"{math.log(h / h0):.6f}",
+                                f"{math.hypot(pb[0], pb[1] - zc) - R_PUNCH:.5f}"])
+
+
+if __name__ == "__main__":
+    main()
