@@ -23,6 +23,7 @@ the punch sphere (negative: penetration; ~0: in contact). Python 3 standard libr
 """
 import argparse
 import csv
+import importlib.util
 import math
 import os
 import re
@@ -65,23 +66,17 @@ def parse_deck(path):
     return nodes, sets, travel_end, h0, outputs
 
 
-def parse_dat(path):
-    """Blocks: list of (kind, set, time, rows)."""
-    blocks, cur = [], None
-    with open(path) as f:
-        for ln in f:
-            m = re.match(r"\s*(total force|displacements) \(.*\) for set (\S+) and time\s+(\S+)",
-                         ln)
-            if m:
-                cur = (m.group(1), m.group(2), float(m.group(3)), [])
-                blocks.append(cur)
-                continue
-            if cur is not None and ln.strip():
-                try:
-                    cur[3].append([float(x) for x in ln.split()])
-                except ValueError:
-                    cur = None
-    return blocks
+def _load_axisymmetric_post():
+    """08's post.py, whose .dat reader this one shares (the same ccx output blocks)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    spec = importlib.util.spec_from_file_location(
+        "post08", os.path.join(here, "..", "08_continuum_reference", "post.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+parse_dat = _load_axisymmetric_post().parse_dat
 
 
 def line_coord(line, x, y):
