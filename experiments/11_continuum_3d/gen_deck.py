@@ -34,21 +34,17 @@ import argparse
 import math
 import sys
 
+import from08
+
 # data/scenes/ex4b_square_clamped.toml (+ elasticity of the ex1 steel, see 08's README)
 SCENE = dict(half_side=59.18, thickness=0.85, K=589.0, eps0=0.0032, n=0.216,
              E=210000.0, nu=0.3, punch_radius=50.8, travels=[5, 10, 15, 20])
 
 
-def swift_table(K, eps0, n, emax=2.0):
-    """*PLASTIC table (true stress, equivalent plastic strain) of sigma = K (eps0 + eps_p)^n,
-    dense where the curve bends (as 08: linear interpolation error < 0.05 % of the stress)."""
-    eps = [0.0]
-    e = 1e-4
-    while e < emax:
-        eps.append(e)
-        e *= 1.12
-    eps.append(emax)
-    return [(K * (eps0 + x) ** n, x) for x in eps]
+# 08's Swift *PLASTIC table (dense where the curve bends: linear interpolation error < 0.05 %
+# of the stress) and node-set writer.
+_gen08 = from08.load("gen_deck")
+swift_table, fmt_set = _gen08.swift_table, _gen08.fmt_set
 
 
 class Deck:
@@ -80,12 +76,6 @@ def brick(g, i, j, k):
 
 def is_node(i, j, k):
     return (i % 2) + (j % 2) + (k % 2) <= 1
-
-
-def fmt_set(ids, per_line=12):
-    ids = list(ids)
-    return "\n".join(", ".join(str(i) for i in ids[k:k + per_line]) + ","
-                     for k in range(0, len(ids), per_line))
 
 
 def write_deck(a, out):

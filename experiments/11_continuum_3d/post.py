@@ -23,10 +23,11 @@ the punch sphere (negative: penetration; ~0: in contact). Python 3 standard libr
 """
 import argparse
 import csv
-import importlib.util
 import math
 import os
 import re
+
+import from08
 
 R_PUNCH = 50.8  # data/scenes/ex4b_square_clamped.toml
 LINES = {"LINEX": "x", "LINEY": "y", "LINED": "diagonal"}
@@ -66,17 +67,8 @@ def parse_deck(path):
     return nodes, sets, travel_end, h0, outputs
 
 
-def _load_axisymmetric_post():
-    """08's post.py, whose .dat reader this one shares (the same ccx output blocks)."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    spec = importlib.util.spec_from_file_location(
-        "post08", os.path.join(here, "..", "08_continuum_reference", "post.py"))
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-parse_dat = _load_axisymmetric_post().parse_dat
+# 08's .dat reader (the same ccx output blocks).
+parse_dat = from08.load("post").parse_dat
 
 
 def line_coord(line, x, y):
