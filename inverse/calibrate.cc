@@ -552,6 +552,12 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   result.final_cost = final_point->cost;
   if (final_point->ok) {
     result.fits = make_fits(cache.pipeline(), *final_point, config, resolution);
+    if (result.termination == CalibrationTermination::kNotConverged) {
+      const std::string why =
+          fmt::format("{}, {} iterations{}", summary.termination, summary.iterations,
+                      summary.message.empty() ? "" : ": " + summary.message);
+      for (DataSetFit& f : result.fits) note_unconverged_fit(why, &f.lack_of_fit);
+    }
     const FdJacobian j = options.uncertainty ? objective.jacobian(x) : FdJacobian{};
     if (!options.uncertainty) {
       result.uncertainty_message = "not computed (model-form refit)";

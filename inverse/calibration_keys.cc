@@ -330,7 +330,9 @@ const std::vector<SectionSpec>& calibration_sections() {
        "the fit stop from the least-squares optimum; calibration.json forward_resolution), "
        "and each data set gets a lack-of-fit verdict (noise, structural, negligible): a "
        "systematic pattern is judged against the stated sigma or, when the data set states "
-       "none, against the forward solver's resolution, never against the relative default."},
+       "none, against the forward solver's resolution, never against the relative default. "
+       "When the fit stopped before converging, a structural verdict says that part of the "
+       "misfit may be the unfinished fit (calibration.json fit_converged false)."},
       {"forward", "[forward]", "Settings of every forward run of the calibration."},
       {"model_form", "[[model_form]]",
        "Model-form sensitivity: one table per alternative model choice (a finer mesh, another "

@@ -191,4 +191,14 @@ LackOfFit lack_of_fit_unstated(const std::vector<double>& difference,
   return out;
 }
 
+void note_unconverged_fit(const std::string& why, LackOfFit* lack_of_fit) {
+  lack_of_fit->fit_converged = false;
+  if (lack_of_fit->verdict != LackOfFitVerdict::kStructural) return;
+  lack_of_fit->text += fmt::format(
+      ". But the fit stopped before converging ({}): part of this misfit may be what the "
+      "unfinished fit left, not the model's form; continue the fit (more iterations, another "
+      "start) before reading it as model-form error",
+      why.empty() ? "no reason given" : why);
+}
+
 }  // namespace vs

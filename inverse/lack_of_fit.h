@@ -67,12 +67,13 @@ struct LackOfFit {
   std::string unit;
   int runs = 0;
   double runs_expected = 0.0;
-  double runs_z = 0.0;      // (runs - expected) / sd; -inf when every sign is equal
-  double runs_p = 1.0;      // one-sided p-value of too few runs
-  double lag1 = 0.0;        // lag-1 autocorrelation
-  double lag1_z = 0.0;      // (lag1 + 1/n) sqrt(n)
-  double z_critical = 0.0;  // one-sided normal quantile of the significance
-  std::string text;         // the verdict in words
+  double runs_z = 0.0;        // (runs - expected) / sd; -inf when every sign is equal
+  double runs_p = 1.0;        // one-sided p-value of too few runs
+  double lag1 = 0.0;          // lag-1 autocorrelation
+  double lag1_z = 0.0;        // (lag1 + 1/n) sqrt(n)
+  double z_critical = 0.0;    // one-sided normal quantile of the significance
+  std::string text;           // the verdict in words
+  bool fit_converged = true;  // false: the fit stopped early (note_unconverged_fit)
 };
 
 inline constexpr int kLackOfFitMinPoints = 8;
@@ -88,5 +89,11 @@ LackOfFit lack_of_fit(const std::vector<double>& normalised, const std::string& 
 LackOfFit lack_of_fit_unstated(const std::vector<double>& difference,
                                const std::vector<double>& resolution, const std::string& unit,
                                const std::string& name, const LackOfFitOptions& options);
+
+// The fit stopped before converging (the iteration limit, or steps that kept failing): the
+// misfit at its end holds what the unfinished fit left besides the model's form, and the bound
+// of 2.7 resolutions (file comment) does not hold. A structural verdict then says so, with
+// `why` (the optimiser's reason), and fit_converged is false; other verdicts are unchanged.
+void note_unconverged_fit(const std::string& why, LackOfFit* lack_of_fit);
 
 }  // namespace vs

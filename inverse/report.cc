@@ -262,7 +262,8 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
     ordered_json lof = {{"verdict", to_string(l.verdict)},
                         {"points", l.points},
                         {"sigma_stated", l.sigma_stated},
-                        {"rms_unit", l.sigma_stated ? "sigma" : "forward_resolution"}};
+                        {"rms_unit", l.sigma_stated ? "sigma" : "forward_resolution"},
+                        {"fit_converged", l.fit_converged}};
     if (!l.sigma_stated) {
       lof["rms_difference"] = l.rms_difference;
       lof["forward_resolution"] = l.resolution;

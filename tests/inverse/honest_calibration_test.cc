@@ -211,6 +211,31 @@ TEST(LackOfFitFit, FiresOnBiasedModelDataAtDefaultSigma) {
       << with_sigma.fits[0].lack_of_fit.text;
 }
 
+TEST(LackOfFitFit, StructuralVerdictOfAnUnfinishedFitSaysSo) {
+  // The biased data of the test above, with the fit stopped after one iteration from a start far
+  // off: its misfit is partly the unfinished fit, and the verdict must say that. The converged
+  // fit's verdict must not.
+  const fs::path dir = scratch_dir();
+  CalibrationConfig config = linear_config(dir, {}, 1.0);
+  config.data = {default_sigma_set(linear_data(480.0, 0.15, 0.1, 0.0, 7))};
+  const auto converged = calibrate(config, quiet(), LinearFake{});
+  ASSERT_EQ(converged.termination, CalibrationTermination::kConverged) << converged.message;
+  EXPECT_TRUE(converged.fits.at(0).lack_of_fit.fit_converged);
+  EXPECT_EQ(converged.fits[0].lack_of_fit.text.find("stopped before converging"),
+            std::string::npos);
+  config.parameters[0].initial = 1500.0;
+  config.optimizer.least_squares.max_iterations = 1;
+  const auto early = calibrate(config, quiet(), LinearFake{});
+  ASSERT_EQ(early.termination, CalibrationTermination::kNotConverged) << early.message;
+  const LackOfFit& l = early.fits.at(0).lack_of_fit;
+  EXPECT_EQ(l.verdict, LackOfFitVerdict::kStructural) << l.text;
+  EXPECT_FALSE(l.fit_converged);
+  EXPECT_NE(l.text.find("stopped before converging (NO_CONVERGENCE, 1 iterations"),
+            std::string::npos)
+      << l.text;
+  EXPECT_NE(calibration_json(early, config).find("\"fit_converged\": false"), std::string::npos);
+}
+
 // StretchingFake with the forward solver's convergence jitter: 3 x tolerance x the curve's
 // scale, smooth along the curve (a pattern) with a phase that changes with the parameters.
 struct JitteredStretchingFake {
