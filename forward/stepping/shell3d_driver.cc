@@ -360,17 +360,26 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
           kept_per_tool[tool] == 0 && smoothed[i] >= best_per_tool[tool] - 1e-9 * (scale + 1.0);
       if (!last) release.push_back(i);
     }
+    std::vector<int> released_per_tool(ntools, 0);
     for (int i : release) {
+      ++released_per_tool[s.contact[i].tool];
       s.contact[i] = NodeContact3{};
       holds.release(i, travel(s), driver_.hold_off_increments * grid_increment_mm_);
     }
     contact_s_ += seconds_since(t0);
     if (options_.verbose) {
+      std::string by_tool;
+      for (int t = 0; t < ntools; ++t) {
+        if (released_per_tool[t] == 0) continue;
+        by_tool += fmt::format("{}{} {}", by_tool.empty() ? " (" : ", ", model_.tools()[t].name(),
+                               released_per_tool[t]);
+      }
+      if (!by_tool.empty()) by_tool += ")";
       std::fprintf(
           stderr,
-          "  contact round %d: %d iterations (%d Newton, %d chord, %d direct), %zu released\n",
+          "  contact round %d: %d iterations (%d Newton, %d chord, %d direct), %zu released%s\n",
           round, out->summary.iterations, out->summary.newton_steps, out->summary.chord_steps,
-          out->summary.picard_steps, release.size());
+          out->summary.picard_steps, release.size(), by_tool.c_str());
     }
     if (release.empty()) {
       // Fixed-gap holder: the pressure of this converged state sets the holder forces (and so the
