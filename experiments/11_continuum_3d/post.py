@@ -183,31 +183,28 @@ HISTORY_R0 = (0.0, 2.5, 5.0, 10.0, 15.0)  # thickness strain history at these r0
 
 
 def write_history(path, nodes, cols, h0, incs, T_end, forces):
-    """Along x at every converged increment: the force, the contact radius (the largest r0 up to
-    which every lower-face node from the centre is within 0.005 mm of the punch), the thickness
-    strain at HISTORY_R0, and the in-plane (x) log strain of the first element's lower face, upper
-    face and mid-surface (the polyline through its 3 node columns, 0 <= r0 <= one element)."""
+    """Along x at every converged increment: the force, the punch gap of the centre's lower-face
+    node, the contact zone (the smallest and largest r0 whose lower-face node is within 0.005 mm
+    of the punch: the contact can be a ring, the centre lifted off), the thickness strain at
+    HISTORY_R0, and the in-plane (x) log strain of the first element's lower face, upper face and
+    mid-surface (the polyline through its 3 node columns, 0 <= r0 <= one element)."""
     start = line_profile(nodes, cols, "x", h0, None, incs[1][1], 0.0, 0.0)
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["punch_travel_mm", "punch_force_N", "contact_r0_mm"]
+        w.writerow(["punch_travel_mm", "punch_force_N", "punch_gap_centre_mm", "contact_r0_min_mm",
+                    "contact_r0_max_mm"]
                    + [f"eps_thickness_r0_{r:g}mm" for r in HISTORY_R0]
                    + ["eps_x_lower_el1", "eps_x_mid_el1", "eps_x_upper_el1"])
         for T, U in incs[1:]:
             prof = line_profile(nodes, cols, "x", h0, None, U, 1.0, T)
-            contact = 0.0
-            for q in prof:
-                if q[7] > 0.005:
-                    break
-                contact = q[2]
-            if prof[0][7] > 0.005:
-                contact = float("nan")
+            touching = [q[2] for q in prof if q[7] <= 0.005] or [float("nan")]
             el = slice(0, 3)
             lower = chord_strain([q[8] for q in start[el]], [q[8] for q in prof[el]])
             upper = chord_strain([q[9] for q in start[el]], [q[9] for q in prof[el]])
             mid = chord_strain([(q[3], q[4]) for q in start[el]], [(q[3], q[4]) for q in prof[el]])
             F = forces.get(min(forces, key=lambda t: abs(t * T_end - T)), float("nan"))
-            w.writerow([f"{T:.5f}", f"{F:.3f}", f"{contact:.4f}"]
+            w.writerow([f"{T:.5f}", f"{F:.3f}", f"{prof[0][7]:.5f}", f"{min(touching):.4f}",
+                        f"{max(touching):.4f}"]
                        + [f"{interp_r0(prof, r, 6):.6f}" for r in HISTORY_R0]
                        + [f"{lower:.6f}", f"{mid:.6f}", f"{upper:.6f}"])
 
