@@ -15,10 +15,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "calibrate.h"
 #include "default_forward_model.h"
@@ -212,6 +214,30 @@ TEST(CalibrationSystem, BundledFrictionOnlyExampleStaysAtTheTruth) {
   const auto result = calibrate(config, options(), make_default_forward_model());
   fmt::print("{}", result.brief_report());
   EXPECT_NEAR(result.parameters[0].value, Truth{}.friction, 1e-4 * Truth{}.friction);
+}
+
+// Every bundled calibration config loads (its keys, its scenes and its data files), so that a
+// typo in one that no test runs (the 3D earing fits take most of an hour) is caught here.
+TEST(CalibrationSystem, EveryBundledConfigLoads) {
+  int loaded = 0;
+  std::vector<std::filesystem::path> configs;
+  for (const auto& entry : std::filesystem::directory_iterator(bundled_dir())) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("calibrate_", 0) == 0 && entry.path().extension() == ".toml")
+      configs.push_back(entry.path());
+  }
+  std::sort(configs.begin(), configs.end());
+  for (const auto& path : configs) {
+    try {
+      const CalibrationConfig config = load_calibration_config(path.string());
+      EXPECT_FALSE(config.parameters.empty()) << path;
+      EXPECT_FALSE(config.data.empty()) << path;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << e.what();
+    }
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 5);  // friction_only, friction_hardening (+ noisy), earing hill48 / yld2000
 }
 
 double truth_of(const Truth& t, const std::string& address) {
