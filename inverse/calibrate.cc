@@ -525,6 +525,10 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
     if (std::isfinite(result.global.cost)) x_start = result.global.x;
     say(fmt::format("global search: best cost {:.6e} after {} evaluations ({})", result.global.cost,
                     result.global.evaluations, result.global.result));
+    if (config.optimizer.global.algorithm == "surface") {
+      say(fmt::format("global search: the grid costs scatter about the quadratic by {:.4g} rms",
+                      result.global.surface_rms));
+    }
   }
 
   LeastSquaresOptions ls = config.optimizer.least_squares;

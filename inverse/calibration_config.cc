@@ -352,6 +352,8 @@ void read_optimizer(const toml::table* t, const std::string& file, OptimizerSett
   if (const auto seed = r.integer("seed")) o.global.seed = static_cast<unsigned long>(*seed);
   o.global.max_evaluations =
       static_cast<int>(r.integer("max_evaluations").value_or(o.global.max_evaluations));
+  o.global.grid_points = static_cast<int>(r.integer("grid_points").value_or(o.global.grid_points));
+  o.global.grid_half_width = r.number("grid_half_width").value_or(o.global.grid_half_width);
   r.finish();
 }
 
@@ -523,6 +525,16 @@ void validate_calibration_config(const CalibrationConfig& config) {
     }
   }
   if (free == 0) throw InputError(fmt::format("{}: every parameter is fixed", file));
+  if (config.optimizer.method == OptimizerMethod::kGlobalThenLocal &&
+      config.optimizer.global.algorithm == "surface" &&
+      surface_evaluations(config.optimizer.global, free) >
+          config.optimizer.global.max_evaluations) {
+    throw InputError(fmt::format(
+        "{}: global_algorithm \"surface\" needs grid_points^{} + 1 = {} evaluations, more than "
+        "max_evaluations = {}",
+        file, free, surface_evaluations(config.optimizer.global, free),
+        config.optimizer.global.max_evaluations));
+  }
 
   if (config.data.empty()) throw InputError(fmt::format("{}: no [[data]]", file));
   std::set<std::string> names;

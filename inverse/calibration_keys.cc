@@ -215,10 +215,27 @@ std::vector<KeySpec> build() {
       o, "threads", kInt, "", closed(1, 256), [] { return std::to_string(optimizer().threads); },
       "Forward runs in parallel (finite differences, global search batches)."));
   k.push_back(choice(
-      o, "global_algorithm", {"mlsl_lds", "crs2", "direct", "bobyqa"},
+      o, "global_algorithm", {"mlsl_lds", "crs2", "direct", "bobyqa", "surface"},
       [] { return quoted(optimizer().global.algorithm); },
-      "NLopt algorithm of the global search."));
+      "Algorithm of the global search: NLopt's mlsl_lds, crs2, direct (global) or bobyqa (local, "
+      "derivative-free, from the initial values); or surface: the cost on a grid around the "
+      "initial values (grid_points per free parameter, +- grid_half_width scales, run in "
+      "parallel) and the minimum of the least-squares quadratic through it, for a forward model "
+      "too noisy for a local search (a 3D cup's rim profile: experiments/10_earing)."));
   k.back().applies_to = {"method global_then_local"};
+  k.push_back(key(
+      o, "grid_points", kInt, "", closed(3, 101),
+      [] { return std::to_string(optimizer().global.grid_points); },
+      "global_algorithm surface: grid points per free parameter (grid_points^free + 1 "
+      "evaluations, at most max_evaluations)."));
+  k.back().applies_to = {"global_algorithm surface"};
+  k.back().bound_reason = "a quadratic needs 3 points per parameter";
+  k.push_back(key(
+      o, "grid_half_width", kFloat, "scales", Range{0, 1000, false, true},
+      [] { return fmt::format("{}", optimizer().global.grid_half_width); },
+      "global_algorithm surface: the grid spans the initial value +- this many parameter "
+      "scales (clipped to the bounds)."));
+  k.back().applies_to = {"global_algorithm surface"};
   k.push_back(key(
       o, "seed", kInt, "", at_least(0), [] { return std::to_string(optimizer().global.seed); },
       "NLopt seed: the global search is deterministic for a given seed."));

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <cmath>
 #include <limits>
 #include <nlopt.hpp>
 #include <stdexcept>
+#include <vector>
 
 namespace vs {
 namespace {
@@ -67,14 +70,129 @@ const char* result_name(nlopt::result result) {
   }
 }
 
+// The quadratic's basis at u: 1, u_i, and u_i u_j (i <= j).
+Eigen::VectorXd quadratic_basis(const Eigen::VectorXd& u) {
+  const Eigen::Index n = u.size();
+  Eigen::VectorXd f(1 + n + n * (n + 1) / 2);
+  Eigen::Index k = 0;
+  f(k++) = 1.0;
+  for (Eigen::Index i = 0; i < n; ++i) f(k++) = u(i);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i; j < n; ++j) f(k++) = u(i) * u(j);
+  return f;
+}
+
+GlobalSearchSummary surface_search(Objective& objective, const Eigen::VectorXd& x0,
+                                   const GlobalSearchOptions& options) {
+  const Eigen::Index n = objective.num_parameters();
+  GlobalSearchSummary summary;
+  summary.x = x0;
+  summary.cost = std::numeric_limits<double>::infinity();
+  // Grid coordinates u in [-1, 1] per parameter, x = x0 + u w (w the half width), clipped.
+  Eigen::VectorXd lo(n), hi(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double w = options.grid_half_width * objective.scale()(i);
+    lo(i) = std::max(objective.lower()(i), x0(i) - w);
+    hi(i) = std::min(objective.upper()(i), x0(i) + w);
+  }
+  auto to_x = [&](const Eigen::VectorXd& u) {
+    return Eigen::VectorXd(0.5 * (lo + hi) + 0.5 * (hi - lo).cwiseProduct(u));
+  };
+  const int m = options.grid_points;
+  long count = 1;
+  for (Eigen::Index i = 0; i < n; ++i) count *= m;
+  std::vector<Eigen::VectorXd> us, xs;
+  for (long c = 0; c < count; ++c) {
+    Eigen::VectorXd u(n);
+    long rest = c;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      u(i) = -1.0 + 2.0 * static_cast<double>(rest % m) / (m - 1);
+      rest /= m;
+    }
+    us.push_back(u);
+    xs.push_back(to_x(u));
+  }
+  const auto evaluations = objective.cache().evaluate_batch(xs);
+  summary.evaluations = static_cast<int>(evaluations.size());
+  std::vector<Eigen::VectorXd> good_u;
+  std::vector<double> good_cost;
+  for (std::size_t k = 0; k < evaluations.size(); ++k) {
+    const auto& e = evaluations[k];
+    if (!e->ok || !std::isfinite(e->cost)) {
+      ++summary.failed_evaluations;
+      continue;
+    }
+    good_u.push_back(us[k]);
+    good_cost.push_back(e->cost);
+    if (e->cost < summary.cost) {
+      summary.cost = e->cost;
+      summary.x = xs[k];
+    }
+  }
+  const Eigen::Index terms = quadratic_basis(Eigen::VectorXd::Zero(n)).size();
+  if (static_cast<Eigen::Index>(good_u.size()) < terms + 1) {
+    summary.result =
+        fmt::format("BEST_GRID_POINT (only {} of {} grid runs succeeded)", good_u.size(), count);
+    return summary;
+  }
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(good_u.size()), terms);
+  Eigen::VectorXd c(A.rows());
+  for (Eigen::Index r = 0; r < A.rows(); ++r) {
+    A.row(r) = quadratic_basis(good_u[static_cast<std::size_t>(r)]).transpose();
+    c(r) = good_cost[static_cast<std::size_t>(r)];
+  }
+  const Eigen::VectorXd coef = A.colPivHouseholderQr().solve(c);
+  summary.surface_rms = std::sqrt((A * coef - c).squaredNorm() / static_cast<double>(A.rows()));
+  Eigen::VectorXd g = coef.segment(1, n);
+  Eigen::MatrixXd H(n, n);
+  Eigen::Index k = 1 + n;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = i; j < n; ++j, ++k) {
+      H(i, j) = H(j, i) = (i == j ? 2.0 : 1.0) * coef(k);
+    }
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(H);
+  if (llt.info() != Eigen::Success) {
+    summary.result = "BEST_GRID_POINT (the quadratic through the grid costs has no minimum)";
+    return summary;
+  }
+  const Eigen::VectorXd u_star = (-llt.solve(g)).cwiseMax(-1.0).cwiseMin(1.0);
+  const Eigen::VectorXd x_star = to_x(u_star);
+  const auto e = objective.evaluate(x_star);
+  ++summary.evaluations;
+  if (!e->ok || !std::isfinite(e->cost)) {
+    ++summary.failed_evaluations;
+    summary.result = "BEST_GRID_POINT (the forward run at the quadratic's minimum failed)";
+    return summary;
+  }
+  summary.x = x_star;
+  summary.cost = e->cost;
+  summary.result = "SURFACE_MINIMUM";
+  return summary;
+}
+
 }  // namespace
+
+long surface_evaluations(const GlobalSearchOptions& options, int free_parameters) {
+  long count = 1;
+  for (int i = 0; i < free_parameters && count <= 100000; ++i) count *= options.grid_points;
+  return count + 1;
+}
 
 bool GlobalSearchOptions::IsValid(std::string* why) const {
   if (algorithm != "mlsl_lds" && algorithm != "crs2" && algorithm != "direct" &&
-      algorithm != "bobyqa") {
+      algorithm != "bobyqa" && algorithm != "surface") {
     if (why)
-      *why =
-          fmt::format("unknown global algorithm '{}' (mlsl_lds, crs2, direct, bobyqa)", algorithm);
+      *why = fmt::format("unknown global algorithm '{}' (mlsl_lds, crs2, direct, bobyqa, surface)",
+                         algorithm);
+    return false;
+  }
+  if (grid_points < 3) {
+    if (why) *why = "grid_points must be >= 3 (a quadratic needs three points per parameter)";
+    return false;
+  }
+  if (!(grid_half_width > 0.0) || !std::isfinite(grid_half_width)) {
+    if (why) *why = "grid_half_width must be > 0";
     return false;
   }
   if (max_evaluations < 1) {
@@ -90,6 +208,7 @@ bool GlobalSearchOptions::IsValid(std::string* why) const {
 
 GlobalSearchSummary global_search(Objective& objective, const Eigen::VectorXd& x0,
                                   const GlobalSearchOptions& options) {
+  if (options.algorithm == "surface") return surface_search(objective, x0, options);
   const auto p = static_cast<unsigned>(objective.num_parameters());
   GlobalSearchSummary summary;
   summary.x = x0;

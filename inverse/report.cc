@@ -161,6 +161,11 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
                            {"failed_evaluations", result.global.failed_evaluations}};
     put_finite(global, "best_cost", result.global.cost);
     global["result"] = result.global.result;
+    if (config.optimizer.global.algorithm == "surface") {
+      global["grid_points"] = config.optimizer.global.grid_points;
+      global["grid_half_width"] = config.optimizer.global.grid_half_width;
+      put_finite(global, "surface_rms", result.global.surface_rms);
+    }
     j["global_search"] = global;
   }
 

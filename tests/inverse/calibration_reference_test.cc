@@ -89,6 +89,8 @@ threads = 1
 global_algorithm = "crs2"
 seed = 3
 max_evaluations = 10
+grid_points = 4
+grid_half_width = 0.5
 noise_floor_factor = 10
 active_set = false
 [uncertainty]
@@ -129,6 +131,8 @@ plots = false
   EXPECT_TRUE(c.data[2].shape_only);
   EXPECT_EQ(c.data[2].measurement.provenance.front().second, "t");
   EXPECT_EQ(c.optimizer.global.algorithm, "crs2");
+  EXPECT_EQ(c.optimizer.global.grid_points, 4);
+  EXPECT_EQ(c.optimizer.global.grid_half_width, 0.5);
   EXPECT_EQ(c.model_forms.size(), 1u);
 }
 
