@@ -526,14 +526,14 @@ void validate_calibration_config(const CalibrationConfig& config) {
   }
   if (free == 0) throw InputError(fmt::format("{}: every parameter is fixed", file));
   if (config.optimizer.method == OptimizerMethod::kGlobalThenLocal &&
-      config.optimizer.global.algorithm == "surface" &&
-      surface_evaluations(config.optimizer.global, free) >
-          config.optimizer.global.max_evaluations) {
-    throw InputError(fmt::format(
-        "{}: global_algorithm \"surface\" needs grid_points^{} + 1 = {} evaluations, more than "
-        "max_evaluations = {}",
-        file, free, surface_evaluations(config.optimizer.global, free),
-        config.optimizer.global.max_evaluations));
+      config.optimizer.global.algorithm == "surface") {
+    const long needed = surface_evaluations(config.optimizer.global, free);
+    if (needed > config.optimizer.global.max_evaluations) {
+      throw InputError(fmt::format(
+          "{}: global_algorithm \"surface\" needs grid_points^{} + 1 = {} evaluations, more "
+          "than max_evaluations = {}",
+          file, free, needed, config.optimizer.global.max_evaluations));
+    }
   }
 
   if (config.data.empty()) throw InputError(fmt::format("{}: no [[data]]", file));

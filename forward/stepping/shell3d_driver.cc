@@ -360,9 +360,9 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
           kept_per_tool[tool] == 0 && smoothed[i] >= best_per_tool[tool] - 1e-9 * (scale + 1.0);
       if (!last) release.push_back(i);
     }
-    std::vector<int> released_per_tool(ntools, 0);
+    std::vector<int> released_per_tool(options_.verbose ? ntools : 0, 0);
     for (int i : release) {
-      ++released_per_tool[s.contact[i].tool];
+      if (options_.verbose) ++released_per_tool[s.contact[i].tool];
       s.contact[i] = NodeContact3{};
       holds.release(i, travel(s), driver_.hold_off_increments * grid_increment_mm_);
     }
