@@ -1,5 +1,6 @@
 #!/bin/bash
-# Run vshell on ex4b (divisions 8 and 16; rigid-plastic and with the elastic correction) and
+# Run vshell on ex4b (divisions 8 and 16; rigid-plastic and with the elastic correction; sticking
+# on the mid-surface, the default, and with numerics.friction_surface = face, label suffix _face) and
 # compare each run with the CalculiX references of results/ (compare_all.sh: results/comparison.csv);
 # writes results/vshell_times.csv and keeps each vshell run's load_travel.csv and x/diagonal strain
 # profiles in results/vshell_<label>/.
@@ -16,10 +17,11 @@ elastic=(--set material.elastic.law=isotropic --set material.elastic.E_MPa=21000
          --set material.elastic.nu=0.3)
 echo "label,divisions,elastic,wall_s,load_1min" > "$here/results/vshell_times.csv"
 for n in 8 16; do
-  for el in rigid elastic; do
+  for el in rigid elastic rigid_face elastic_face; do
     label=n${n}_${el}
     extra=()
-    [ "$el" = elastic ] && extra=("${elastic[@]}")
+    case $el in elastic*) extra=("${elastic[@]}") ;; esac
+    case $el in *_face) extra+=(--set numerics.friction_surface=face) ;; esac
     load=$(cut -d' ' -f1 /proc/loadavg)
     start=$(date +%s.%N)
     "$vshell" run "$scene" --set blank.divisions=$n "${common[@]}" "${extra[@]}" -o "$tmp/$label" > "$tmp.$label.log" 2>&1

@@ -161,6 +161,23 @@ double AxisymModel::node_thickness(const AxisymState& s, int node) const {
   return 0.5 * (s.thickness[node - 1] + s.thickness[node]);
 }
 
+double AxisymModel::face_arm(const AxisymState& s, int node) const {
+  if (scene_.numerics.friction_surface != FrictionSurface::kFace) return 0.0;
+  const NodeContact& c = s.contact[node];
+  if (c.tool < 0 || (node == 0 && r0_.front() == 0.0)) return 0.0;
+  // Pressed on both faces (flange under a holder, ironing): the mid-surface stays.
+  if (c.on_die_face && (has_holder_ || fixed_gap_holder())) return 0.0;
+  if (c.on_holder_face || c.squeeze_tool >= 0) return 0.0;
+  // The node's normal: the mean of its elements' normals n = (-s, c).
+  Eigen::Vector2d n = Eigen::Vector2d::Zero();
+  for (int e : {node - 1, node}) {
+    if (e < 0 || e >= num_elements()) continue;
+    const Eigen::Vector2d t = s.x[e + 1] - s.x[e];
+    n += Eigen::Vector2d(-t.y(), t.x()).normalized();
+  }
+  return 0.5 * node_thickness(s, node) * std::abs(n.normalized().dot(c.normal));
+}
+
 Eigen::Matrix3d AxisymModel::frame(const AxisymState& s, int node) const {
   Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();
   const NodeContact& c = s.contact[node];
@@ -171,14 +188,23 @@ Eigen::Matrix3d AxisymModel::frame(const AxisymState& s, int node) const {
   Q(1, 0) = t.y();
   Q(0, 1) = n.x();
   Q(1, 1) = n.y();
+  // Face velocity (friction_surface = face): the tangential unknown is the touching face's
+  // v_t + k beta, so (u, w) = t (v_t,face - k beta) + n v_n.
+  const double k = face_arm(s, node);
+  Q(0, 2) = -k * t.x();
+  Q(1, 2) = -k * t.y();
   return Q;
 }
 
 Eigen::VectorXd AxisymModel::to_local(const AxisymState& s, const Eigen::VectorXd& v) const {
   Eigen::VectorXd out = v;
   for (int i = 0; i < num_nodes(); ++i) {
-    if (s.contact[i].tool >= 0)
-      out.segment<3>(3 * i) = frame(s, i).transpose() * v.segment<3>(3 * i);
+    if (s.contact[i].tool < 0) continue;
+    // Q^-1: the rotation's transpose, then the face term (frame()).
+    const Eigen::Matrix3d Q = frame(s, i);
+    const Eigen::Matrix2d R = Q.topLeftCorner<2, 2>();
+    out.segment<2>(3 * i) = R.transpose() * v.segment<2>(3 * i);
+    out(3 * i) += face_arm(s, i) * v(3 * i + 2);
   }
   return out;
 }

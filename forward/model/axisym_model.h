@@ -153,8 +153,18 @@ class AxisymModel {
     freeze_material(s.eps_bar, dt_predicted);
   }
 
-  // Node frames: global = Q * local for the node's 3 unknowns.
+  // Node frames: global = Q * local for the node's 3 unknowns. A contact node's unknowns are
+  // (v_t, v_n, beta) along the tool's tangent t = (n_z, -n_r) and normal n. With
+  // numerics.friction_surface = face, v_t is the tangential velocity of the face that touches the
+  // tool, v.t + k beta (face_arm), so that sticking and friction act on that face: Q is then not
+  // orthogonal, and every transformation uses Q (global = Q local) and Q^T (forces, matrix).
   Eigen::Matrix3d frame(const AxisymState& s, int node) const;
+  // k of frame(): the touching face lies at zeta = -/+ h/2 along the element normal m = (-s, c)
+  // and moves with v - zeta beta t_e (axisym2.h), so along the tool's tangent its velocity is
+  // v.t + k beta with k = (h/2) |m . n| (m: the mean normal of the node's elements). Zero for a
+  // free node, at the axis, with friction_surface = mid, and where both faces are pressed (a
+  // flange under a blank holder, an ironed wall): there the two faces' friction moments cancel.
+  double face_arm(const AxisymState& s, int node) const;
   Eigen::VectorXd to_local(const AxisymState& s, const Eigen::VectorXd& v_global) const;
   Eigen::VectorXd to_global(const AxisymState& s, const Eigen::VectorXd& v_local) const;
 

@@ -334,6 +334,7 @@ void FormingModel::prepare(const FormingState& s) {
   frame_.resize(nn);
   v1_.resize(nn);
   v2_.resize(nn);
+  face_.assign(static_cast<std::size_t>(nn), FaceCoupling::Zero());
   mask_.assign(num_dofs(), 0);
   value_.assign(num_dofs(), 0.0);
   // A new solve: its first tangent is linearised about the last record of the previous one
@@ -362,6 +363,7 @@ void FormingModel::prepare(const FormingState& s) {
     const Vec3& d = s.director[i];
     v1_[i] = (hint - hint.dot(d) * d).normalized();
     v2_[i] = d.cross(v1_[i]);
+    face_[i] = face_coupling(s, i);
     fix_rigid_modes(i);
     const NodeContact3& c = s.contact[i];
     if (c.tool >= 0) {
@@ -385,7 +387,16 @@ void FormingModel::prepare(const FormingState& s) {
   operators_.resize(static_cast<std::size_t>(ne));
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
-    shell9_operators(geometry(s, e), rule_, thick_, &operators_[static_cast<std::size_t>(e)]);
+    Shell9Operators& ops = operators_[static_cast<std::size_t>(e)];
+    shell9_operators(geometry(s, e), rule_, thick_, &ops);
+    // friction_surface = face: a node's first two velocity unknowns are its touching face's, u =
+    // u_face - C r (face_coupling), so the rotation columns gain the velocity columns times -C.
+    const auto& conn = mesh_.elements[e];
+    for (int a = 0; a < 9; ++a) {
+      const FaceCoupling& C = face_[static_cast<std::size_t>(conn[a])];
+      if (C.isZero(0.0)) continue;
+      ops.L.middleCols<2>(5 * a + 3) -= ops.L.middleCols<3>(5 * a) * C;
+    }
   }
   // The penalties on the area rate (gap_holder3.h) of the state's configuration: the fixed-gap
   // holder's flange, and the squeezed nodes' ironing (update_squeezed).
@@ -396,6 +407,7 @@ void FormingModel::prepare(const FormingState& s) {
     in.thickness = &s.thickness;
     in.in_gap = &flags;
     in.frame = &frame_;
+    in.face = &face_;
     in.viscosity = &shear_viscosity_;
     in.dt_s = step_dt_;
     return in;
@@ -465,14 +477,35 @@ void FormingModel::fix_rigid_modes(int i) {
   }
 }
 
+FormingModel::FaceCoupling FormingModel::face_coupling(const FormingState& s, int i) const {
+  FaceCoupling C = FaceCoupling::Zero();
+  if (scene_.numerics.friction_surface != FrictionSurface::kFace) return C;
+  const NodeContact3& c = s.contact[static_cast<std::size_t>(i)];
+  if (c.tool < 0 || axis_[i] || i == spin_node_) return C;
+  // Pressed on both faces (flange under a holder, ironing): the mid-surface stays.
+  if (in_gap(c) || c.squeeze_tool >= 0 || (c.on_die_face && has_holder())) return C;
+  // The touching face is at t = -sign(n . V3) (h / 2 along V3, n from the tool into the sheet)
+  // and moves with u + t (h/2) dV3 = u + z P r, P = [-V2, V1] (rot_map_5dof). Its tangential
+  // components are the unknowns 0, 1: u_face,k = u_k + z a_k . P r.
+  const Vec3& d = s.director[static_cast<std::size_t>(i)];
+  const double z = (c.normal.dot(d) >= 0.0 ? -0.5 : 0.5) * s.thickness[static_cast<std::size_t>(i)];
+  const Mat3& Q = frame_[static_cast<std::size_t>(i)];
+  for (int k = 0; k < 2; ++k) {
+    C(k, 0) = z * Q.col(k).dot(-v2_[i]);
+    C(k, 1) = z * Q.col(k).dot(v1_[i]);
+  }
+  return C;
+}
+
 Eigen::VectorXd FormingModel::to_local(const std::vector<Vec3>& velocity,
                                        const std::vector<Vec3>& omega) const {
   Eigen::VectorXd x(num_dofs());
   for (int i = 0; i < num_nodes(); ++i) {
-    const Vec3 u = frame_[i].transpose() * velocity[i];
+    const Eigen::Vector2d r(omega[i].dot(v1_[i]), omega[i].dot(v2_[i]));
+    const Vec3 u = frame_[i].transpose() * velocity[i] + face_[static_cast<std::size_t>(i)] * r;
     for (int k = 0; k < 3; ++k) x(model_->dof(i, k)) = u(k);
-    x(model_->dof(i, 3)) = omega[i].dot(v1_[i]);
-    x(model_->dof(i, 4)) = omega[i].dot(v2_[i]);
+    x(model_->dof(i, 3)) = r(0);
+    x(model_->dof(i, 4)) = r(1);
   }
   return x;
 }
@@ -483,7 +516,7 @@ void FormingModel::to_global(const Eigen::VectorXd& x, std::vector<Vec3>* veloci
   omega->resize(num_nodes());
   for (int i = 0; i < num_nodes(); ++i) {
     const int d = model_->dof(i, 0);
-    (*velocity)[i] = frame_[i] * x.segment<3>(d);
+    (*velocity)[i] = frame_[i] * mid_velocity(i, x.segment<5>(d));
     (*omega)[i] = x(d + 3) * v1_[i] + x(d + 4) * v2_[i];
   }
 }
@@ -584,25 +617,28 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
 
 void FormingModel::add_coupling(int e, const Eigen::VectorXd& qe, bool want_matrix,
                                 ElementContribution* c) const {
-  // K_g acts on the global velocities F_a q_a of the nodes (F_a: the nodal frame, 5 element dofs
-  // per node, velocities first): force F_a^T sum_b k_ab dv_b, matrix blocks k_ab F_a^T F_b.
+  // K_g acts on the global velocities G_a q_a of the nodes (G_a = F_a [I, -C_a]: the nodal frame
+  // and the face coupling, 5 element dofs per node, velocities first): force G_a^T sum_b k_ab
+  // dv_b, matrix blocks k_ab G_a^T G_b.
   const Eigen::Matrix<double, 9, 9>& k = coupling_k_[static_cast<std::size_t>(e)];
   const auto& conn = mesh_.elements[e];
+  std::array<Eigen::Matrix<double, 3, 5>, 9> G;
   std::array<Vec3, 9> dv;
   for (int b = 0; b < 9; ++b) {
-    const int j = conn[b];
-    dv[b] = frame_[j] * qe.segment<3>(5 * b) - coupling_->v_ref[j];
+    const std::size_t j = static_cast<std::size_t>(conn[b]);
+    G[b].leftCols<3>() = frame_[j];
+    G[b].rightCols<2>() = -frame_[j] * face_[j];
+    dv[b] = G[b] * qe.segment<5>(5 * b) - coupling_->v_ref[j];
   }
   for (int a = 0; a < 9; ++a) {
     Vec3 f = Vec3::Zero();
     for (int b = 0; b < 9; ++b) f += k(a, b) * dv[b];
-    c->force.segment<3>(5 * a) += frame_[conn[a]].transpose() * f;
+    c->force.segment<5>(5 * a) += G[a].transpose() * f;
     c->potential += 0.5 * dv[a].dot(f);
     if (!want_matrix) continue;
     for (int b = 0; b < 9; ++b) {
       if (k(a, b) == 0.0) continue;
-      c->stiffness.block<3, 3>(5 * a, 5 * b) +=
-          k(a, b) * frame_[conn[a]].transpose() * frame_[conn[b]];
+      c->stiffness.block<5, 5>(5 * a, 5 * b) += k(a, b) * G[a].transpose() * G[b];
     }
   }
 }

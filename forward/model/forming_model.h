@@ -215,6 +215,20 @@ class FormingModel {
 
   // Translational frame Q of a node (global = Q local) and its director axes V1, V2.
   const Mat3& frame(int node) const { return frame_[node]; }
+  // friction_surface = face (issue 15; docs/contact_face.md): at a node touching one tool the
+  // first two translational unknowns are the tangential velocity components of the face that
+  // touches it, u_face = u + C r (u: the mid-surface velocity in the nodal frame, r: the rates
+  // about V1, V2), so that sticking holds that face and Coulomb friction acts on its slip, with
+  // the friction's moment about the mid-surface (the work f . u_face). C is zero for a free node,
+  // at the axis, with friction_surface = mid and where both faces are pressed (holder, ironing).
+  using FaceCoupling = Eigen::Matrix<double, 3, 2>;
+  const FaceCoupling& face_coupling(int node) const {
+    return face_[static_cast<std::size_t>(node)];
+  }
+  // The node's mid-surface velocity in its nodal frame from its 5 local unknowns q.
+  Vec3 mid_velocity(int node, const Eigen::Matrix<double, 5, 1>& q) const {
+    return q.head<3>() - face_[static_cast<std::size_t>(node)] * q.tail<2>();
+  }
   const Vec3& v1(int node) const { return v1_[node]; }
   const Vec3& v2(int node) const { return v2_[node]; }
   const std::vector<char>& prescribed_mask() const { return mask_; }
@@ -288,6 +302,8 @@ class FormingModel {
                 Shell9Stiffness kind, bool replace, FormingSystem* out);
   // Prescribed value v of local dof k of a node (prepare()).
   void prescribe(int node, int k, double v);
+  // C of a node of state s (face_coupling(); prepare(), after its frames).
+  FaceCoupling face_coupling(const FormingState& s, int node) const;
   // Prescribes the dofs of node i that remove the rigid-body modes: the symmetry planes of the
   // quarter model, or for a full blank with a free edge the in-plane translation and rotation
   // about z.
@@ -358,6 +374,7 @@ class FormingModel {
   std::vector<Eigen::Matrix<double, 9, 9>> coupling_k_;  // per element, scale K_g (with coupling_)
   std::vector<Mat3> frame_;
   std::vector<Vec3> v1_, v2_;
+  std::vector<FaceCoupling> face_;
   std::vector<char> mask_;
   std::vector<double> value_;
   // Primal-dual tangent (shell9.h, Shell9FlowDirection): the records (per element and flow

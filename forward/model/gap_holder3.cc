@@ -108,11 +108,16 @@ void GapHolder3::prepare(const GapHolderInput& in) {
       c.penalty = k;
       c.area = area[ua];
       c.stiffness = k * h * area[ua];
-      // Local velocities: v_b = Q_b q_b, so b_b . v_b = (Q_b^T b_b) . q_b.
+      // Local unknowns: v_b = Q_b (q_t - C_b q_r), so b_b . v_b = (Q_b^T b_b) . q_t -
+      // (C_b^T Q_b^T b_b) . q_r.
       for (std::size_t b = 0; b < 9; ++b) {
-        const Mat3& Q = (*in.frame)[static_cast<std::size_t>(conn[b])];
-        c.b.segment<3>(3 * static_cast<Eigen::Index>(b)) =
-            Q.transpose() * bg.row(static_cast<Eigen::Index>(b)).transpose();
+        const std::size_t node_b = static_cast<std::size_t>(conn[b]);
+        const Mat3& Q = (*in.frame)[node_b];
+        const Vec3 bt = Q.transpose() * bg.row(static_cast<Eigen::Index>(b)).transpose();
+        c.b.segment<3>(5 * static_cast<Eigen::Index>(b)) = bt;
+        c.b.segment<2>(5 * static_cast<Eigen::Index>(b) + 3) =
+            in.face ? Eigen::Vector2d(-(*in.face)[node_b].transpose() * bt)
+                    : Eigen::Vector2d::Zero();
       }
       constraints_[ue].push_back(c);
     }
@@ -123,23 +128,17 @@ void GapHolder3::add(int e, const Eigen::VectorXd& qe, bool want_matrix,
                      ElementContribution* out) const {
   const std::vector<Constraint>& list = constraints_[static_cast<std::size_t>(e)];
   if (list.empty()) return;
-  Eigen::Matrix<double, 27, 1> v;
-  for (Eigen::Index b = 0; b < 9; ++b) v.segment<3>(3 * b) = qe.segment<3>(5 * b);
+  assert(qe.size() == 45);
+  const Eigen::Matrix<double, 45, 1> v = qe;
   const bool matrix = want_matrix && out->stiffness.rows() == qe.size();
   for (const Constraint& c : list) {
     const double violation = c.rate_bound - c.b.dot(v);
     if (violation <= 0.0) continue;
     // Phi = k V violation^2 / 2; dPhi/dq = -k V violation b; d2Phi/dq2 = k V b b^T.
     out->potential += 0.5 * c.stiffness * violation * violation;
-    for (Eigen::Index b = 0; b < 9; ++b) {
-      out->force.segment<3>(5 * b) -= c.stiffness * violation * c.b.segment<3>(3 * b);
-    }
+    out->force -= c.stiffness * violation * c.b;
     if (!matrix) continue;
-    for (Eigen::Index a = 0; a < 9; ++a)
-      for (Eigen::Index b = 0; b < 9; ++b) {
-        out->stiffness.block<3, 3>(5 * a, 5 * b) +=
-            c.stiffness * c.b.segment<3>(3 * a) * c.b.segment<3>(3 * b).transpose();
-      }
+    out->stiffness.noalias() += c.stiffness * c.b * c.b.transpose();
   }
 }
 
@@ -148,8 +147,8 @@ void GapHolder3::add_element_forces(int e, const Eigen::VectorXd& qe,
   const std::size_t ue = static_cast<std::size_t>(e);
   const auto& conn = mesh_->elements[ue];
   const std::array<char, 9>& gap = gap_nodes_[ue];
-  Eigen::Matrix<double, 27, 1> v;
-  for (Eigen::Index b = 0; b < 9; ++b) v.segment<3>(3 * b) = qe.segment<3>(5 * b);
+  assert(qe.size() == 45);
+  const Eigen::Matrix<double, 45, 1> v = qe;
   // Areas of the element's nodes in the gap, to share the force of the constrained nodes outside.
   double gap_area = 0.0;
   std::array<double, 9> share{};

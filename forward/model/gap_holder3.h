@@ -85,6 +85,9 @@ struct GapHolderInput {
   const std::vector<double>* thickness = nullptr;  // per node [mm]
   const std::vector<char>* in_gap = nullptr;       // per node
   const std::vector<Mat3>* frame = nullptr;        // nodal velocity frames (global = Q local)
+  // Optional face couplings C (FormingModel::face_coupling): the mid-surface velocity of a node
+  // is Q (q_t - C q_r) in its 5 local unknowns q = (q_t, q_r); null: C = 0.
+  const std::vector<Eigen::Matrix<double, 3, 2>>* face = nullptr;
   const std::vector<double>* viscosity = nullptr;  // per element reference viscosity [MPa s]
   double gap_mm = 0.0;
   double dt_s = 0.0;  // the step the constraint is for
@@ -126,7 +129,7 @@ class GapHolder3 {
     double stiffness = 0.0;          // k V_ea [N s mm]
     double penalty = 0.0;            // k [MPa s]
     double area = 0.0;               // A_ea [mm^2]
-    Eigen::Matrix<double, 27, 1> b;  // div_s v = b . (local velocities of the 9 nodes)
+    Eigen::Matrix<double, 45, 1> b;  // div_s v = b . (the 5 local unknowns of the 9 nodes)
   };
   void add_element_forces(int e, const Eigen::VectorXd& qe, std::vector<double>* f) const;
 

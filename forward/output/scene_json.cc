@@ -135,6 +135,16 @@ const char* name(NormalStress n) {
   return "none";
 }
 
+const char* name(FrictionSurface f) {
+  switch (f) {
+    case FrictionSurface::kMid:
+      return "mid";
+    case FrictionSurface::kFace:
+      return "face";
+  }
+  return "mid";
+}
+
 Json tool_json(const ToolSpec& t) {
   Json j;
   j["name"] = t.name;
@@ -228,7 +238,8 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                    {"strain_rate_cutoff", n.strain_rate_cutoff},
                    {"friction_regularisation", n.friction_regularisation},
                    {"max_cutbacks", n.max_cutbacks},
-                   {"normal_stress", name(n.normal_stress)}};
+                   {"normal_stress", name(n.normal_stress)},
+                   {"friction_surface", name(n.friction_surface)}};
 
   const FormingLimitSpec& fl = s.forming_limit;
   j["forming_limit"] = {{"model", name(fl.model)},

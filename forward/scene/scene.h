@@ -175,6 +175,14 @@ enum class NormalStress {
   kContact,  // sigma_33 = -p(zeta), linear from the contact pressure on each face to the other
 };
 
+// Where a tool's tangential contact (sticking, Coulomb friction) acts on the sheet (issue 15;
+// docs/contact_face.md): the paper's shell holds the mid-surface, a continuum the face that
+// touches the tool.
+enum class FrictionSurface {
+  kMid,   // the mid-surface velocity (the paper's shell)
+  kFace,  // the touching face's velocity v + z dV3/dt (z = -/+ h/2), with the friction's moment
+};
+
 // Strain evaluation of the 9-node shell (geometry = shell3d; forward/shell3d/shell9.h).
 enum class ShellElementRule {
   kMitc9,           // MITC9 assumed covariant strains (Bucalem-Bathe): no membrane locking
@@ -217,6 +225,7 @@ struct NumericsSpec {
   int max_cutbacks = 8;                   // step halvings before the run stops
   ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
   NormalStress normal_stress = NormalStress::kNone;
+  FrictionSurface friction_surface = FrictionSurface::kMid;
 };
 
 // Forming-limit curve (FLC) of the forming-limit diagram: outputs only (fld.svg, the margin per

@@ -435,6 +435,13 @@ std::vector<KeySpec> build_keys() {
              "reaction / nodal area, lagged: the converged value at the start of each solve) to "
              "the other face, which lowers the in-plane stresses by the local pressure "
              "(experiments/08_continuum_reference, section 8)."));
+  add(choice(nu, "friction_surface", enum_field<&numerics, &NumericsSpec::friction_surface>(),
+             {"mid", "face"},
+             "Where sticking and Coulomb friction act: mid = on the mid-surface velocity (the "
+             "paper's shell); face = on the velocity of the face that touches the tool, v +/- "
+             "(h/2) dV3/dt, so a sticking tool holds that face and friction has its moment about "
+             "the mid-surface (docs/contact_face.md). Flange nodes pressed from both faces (blank "
+             "holder, ironing) keep the mid-surface."));
 
   // [forming_limit]
   const std::string_view fl = "forming_limit";

@@ -1,7 +1,8 @@
 // Finite-difference checks of the assembled forming models with every nodal term active: punch
 // contact with Coulomb friction, the force blank holder and its friction on the flange, a squeezed
 // (ironed) node with the second tool's friction and the squeeze penalty (axisymmetric), the
-// fixed-gap holder penalty (axisymmetric), and in 3D the friction along the slip vector.
+// fixed-gap holder penalty (axisymmetric), and in 3D the friction along the slip vector; each with
+// the tangential contact on the mid-surface and on the touching face (numerics.friction_surface).
 // What each model claims (model/axisym_model.h, model/forming_model.h):
 //   - residual = gradient of the flow potential with the normal forces lagged (frozen);
 //   - axisymmetric: the kTangent matrix at weight 1 is the derivative of the residual, also with
@@ -20,6 +21,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "model/axisym_model.h"
@@ -115,12 +117,13 @@ Eigen::VectorXd generic_velocity(const AxisymModel& m, const AxisymState& s, dou
   return v;
 }
 
-class AxisymModelFd : public ::testing::TestWithParam<bool> {};
+class AxisymModelFd : public ::testing::TestWithParam<std::tuple<bool, FrictionSurface>> {};
 
 TEST_P(AxisymModelFd, TangentIsTheResidualsDerivativeAndResidualThePotentialsGradient) {
-  const bool gap = GetParam();
+  const bool gap = std::get<0>(GetParam());
   Scene sc = scene(gap ? "ex3_flat_punch_cup_fixed_gap" : "ex3_flat_punch_cup");
   sc.blank.elements = 16;
+  sc.numerics.friction_surface = std::get<1>(GetParam());
   AxisymModel m(sc);
   AxisymState s = cup_state(m, gap);
   m.place_tools(s);
@@ -190,7 +193,10 @@ TEST_P(AxisymModelFd, TangentIsTheResidualsDerivativeAndResidualThePotentialsGra
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ForceAndGapHolder, AxisymModelFd, ::testing::Values(false, true));
+INSTANTIATE_TEST_SUITE_P(ForceAndGapHolder, AxisymModelFd,
+                         ::testing::Combine(::testing::Values(false, true),
+                                            ::testing::Values(FrictionSurface::kMid,
+                                                              FrictionSurface::kFace)));
 
 // The friction force of a sliding punch node is the closed form mu N 2/pi atan(v_t / v0) (the
 // residual's tangential component with and without the normal force), and the holder adds its
@@ -302,10 +308,11 @@ Eigen::VectorXd shell_velocity(const FormingModel& m, double v0) {
   return x;
 }
 
-class Shell3dModelFd : public ::testing::Test {
+class Shell3dModelFd : public ::testing::TestWithParam<FrictionSurface> {
  protected:
   Shell3dModelFd() : setup_{scene("ex2_quarter_disc_deep_drawing_3d"), {}, {}} {
     setup_.sc.blank.divisions = 2;
+    setup_.sc.numerics.friction_surface = GetParam();
     setup_.sc.tools.at(0).friction = 0.2;
     m_ = std::make_unique<FormingModel>(setup_.sc);
     s_ = m_->initial_state();
@@ -329,7 +336,7 @@ class Shell3dModelFd : public ::testing::Test {
 // is mu N 2/pi atan(|s|/v0) along the slip s (the tools move along z, the nodal frame's third
 // axis is the contact normal: s is the node's first two local velocities); the die-face nodes add
 // the holder's coefficient times their share of the holder force.
-TEST_F(Shell3dModelFd, FrictionForceIsTheClosedFormAlongTheSlip) {
+TEST_P(Shell3dModelFd, FrictionForceIsTheClosedFormAlongTheSlip) {
   ASSERT_GE(setup_.punch_nodes.size(), 2u);
   ASSERT_GE(setup_.flange_nodes.size(), 2u);
   FormingSystem with, without;
@@ -376,7 +383,7 @@ TEST_F(Shell3dModelFd, FrictionForceIsTheClosedFormAlongTheSlip) {
 // Residual = gradient of the potential; the matrix = derivative of the residual once the
 // (not asserted, see below) ...; the friction stiffness (difference
 // of the matrices with and without normal forces) = derivative of the friction force.
-TEST_F(Shell3dModelFd, ResidualPotentialAndTangentAgreeWithFiniteDifferences) {
+TEST_P(Shell3dModelFd, ResidualPotentialAndTangentAgreeWithFiniteDifferences) {
   const int n = m_->num_dofs();
   const auto& mask = m_->prescribed_mask();
   auto tangent = [&](const FormingState& s, FormingSystem* out) {
@@ -426,6 +433,9 @@ TEST_F(Shell3dModelFd, ResidualPotentialAndTangentAgreeWithFiniteDifferences) {
   fmt::print("3D model: max |K - dr/dx| {:.3g} of {:.3g} (primal-dual element tangent)\n", k_err,
              k_scale);
 }
+
+INSTANTIATE_TEST_SUITE_P(MidAndFace, Shell3dModelFd,
+                         ::testing::Values(FrictionSurface::kMid, FrictionSurface::kFace));
 
 }  // namespace
 }  // namespace vs
