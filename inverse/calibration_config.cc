@@ -354,6 +354,8 @@ void read_optimizer(const toml::table* t, const std::string& file, OptimizerSett
       static_cast<int>(r.integer("max_evaluations").value_or(o.global.max_evaluations));
   o.global.grid_points = static_cast<int>(r.integer("grid_points").value_or(o.global.grid_points));
   o.global.grid_half_width = r.number("grid_half_width").value_or(o.global.grid_half_width);
+  o.global.surface_rounds =
+      static_cast<int>(r.integer("surface_rounds").value_or(o.global.surface_rounds));
   r.finish();
 }
 
@@ -529,10 +531,12 @@ void validate_calibration_config(const CalibrationConfig& config) {
       config.optimizer.global.algorithm == "surface") {
     const long needed = surface_evaluations(config.optimizer.global, free);
     if (needed > config.optimizer.global.max_evaluations) {
+      const int rounds = config.optimizer.global.surface_rounds;
       throw InputError(fmt::format(
-          "{}: global_algorithm \"surface\" needs grid_points^{} + 1 = {} evaluations, more "
+          "{}: global_algorithm \"surface\" needs {}grid_points^{} + 1{} = {} evaluations, more "
           "than max_evaluations = {}",
-          file, free, needed, config.optimizer.global.max_evaluations));
+          file, rounds > 1 ? fmt::format("{} (", rounds) : "", free, rounds > 1 ? ")" : "", needed,
+          config.optimizer.global.max_evaluations));
     }
   }
 

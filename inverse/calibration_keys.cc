@@ -226,8 +226,8 @@ std::vector<KeySpec> build() {
   k.push_back(key(
       o, "grid_points", kInt, "", closed(3, 101),
       [] { return std::to_string(optimizer().global.grid_points); },
-      "global_algorithm surface: grid points per free parameter (grid_points^free + 1 "
-      "evaluations, at most max_evaluations)."));
+      "global_algorithm surface: grid points per free parameter (surface_rounds (grid_points^free "
+      "+ 1) evaluations, at most max_evaluations)."));
   k.back().applies_to = {"global_algorithm surface"};
   k.back().bound_reason = "a quadratic needs 3 points per parameter";
   k.push_back(key(
@@ -235,6 +235,13 @@ std::vector<KeySpec> build() {
       [] { return fmt::format("{}", optimizer().global.grid_half_width); },
       "global_algorithm surface: the grid spans the initial value +- this many parameter "
       "scales (clipped to the bounds)."));
+  k.back().applies_to = {"global_algorithm surface"};
+  k.push_back(key(
+      o, "surface_rounds", kInt, "", closed(1, 10),
+      [] { return std::to_string(optimizer().global.surface_rounds); },
+      "global_algorithm surface: zoom rounds; each next round is the grid again, centred on the "
+      "previous round's answer with half its half width (a first grid too wide for the cost's "
+      "curvature puts the quadratic's minimum off; experiments/10_earing)."));
   k.back().applies_to = {"global_algorithm surface"};
   k.push_back(key(
       o, "seed", kInt, "", at_least(0), [] { return std::to_string(optimizer().global.seed); },

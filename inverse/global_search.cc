@@ -82,8 +82,9 @@ Eigen::VectorXd quadratic_basis(const Eigen::VectorXd& u) {
   return f;
 }
 
-GlobalSearchSummary surface_search(Objective& objective, const Eigen::VectorXd& x0,
-                                   const GlobalSearchOptions& options) {
+// One round of the response surface: the grid of +- half_width scales around x0.
+GlobalSearchSummary surface_round(Objective& objective, const Eigen::VectorXd& x0,
+                                  const GlobalSearchOptions& options, double half_width) {
   const Eigen::Index n = objective.num_parameters();
   GlobalSearchSummary summary;
   summary.x = x0;
@@ -91,7 +92,7 @@ GlobalSearchSummary surface_search(Objective& objective, const Eigen::VectorXd& 
   // Grid coordinates u in [-1, 1] per parameter, x = x0 + u w (w the half width), clipped.
   Eigen::VectorXd lo(n), hi(n);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double w = options.grid_half_width * objective.scale()(i);
+    const double w = half_width * objective.scale()(i);
     lo(i) = std::max(objective.lower()(i), x0(i) - w);
     hi(i) = std::min(objective.upper()(i), x0(i) + w);
   }
@@ -171,12 +172,31 @@ GlobalSearchSummary surface_search(Objective& objective, const Eigen::VectorXd& 
   return summary;
 }
 
+// surface_rounds rounds, each centred on the previous round's answer with half its half width.
+GlobalSearchSummary surface_search(Objective& objective, const Eigen::VectorXd& x0,
+                                   const GlobalSearchOptions& options) {
+  GlobalSearchSummary summary;
+  summary.x = x0;
+  double half_width = options.grid_half_width;
+  for (int round = 0; round < options.surface_rounds; ++round, half_width *= 0.5) {
+    GlobalSearchSummary r = surface_round(objective, summary.x, options, half_width);
+    r.evaluations += summary.evaluations;
+    r.failed_evaluations += summary.failed_evaluations;
+    if (options.surface_rounds > 1) {
+      r.result = fmt::format("{} (round {} of {}, +- {:g} scales)", r.result, round + 1,
+                             options.surface_rounds, half_width);
+    }
+    summary = r;
+  }
+  return summary;
+}
+
 }  // namespace
 
 long surface_evaluations(const GlobalSearchOptions& options, int free_parameters) {
   long count = 1;
   for (int i = 0; i < free_parameters && count <= 100000; ++i) count *= options.grid_points;
-  return count + 1;
+  return static_cast<long>(options.surface_rounds) * (count + 1);
 }
 
 bool GlobalSearchOptions::IsValid(std::string* why) const {
@@ -189,6 +209,10 @@ bool GlobalSearchOptions::IsValid(std::string* why) const {
   }
   if (grid_points < 3) {
     if (why) *why = "grid_points must be >= 3 (a quadratic needs three points per parameter)";
+    return false;
+  }
+  if (surface_rounds < 1 || surface_rounds > 10) {
+    if (why) *why = "surface_rounds must be in [1, 10]";
     return false;
   }
   if (!(grid_half_width > 0.0) || !std::isfinite(grid_half_width)) {

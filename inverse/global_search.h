@@ -13,7 +13,11 @@
 // averages the noise over the grid instead of following it into a dip; when H is not positive
 // definite (no bowl on the grid) the best grid point is the answer. surface_rms is the costs'
 // rms scatter about the quadratic (noise plus the quadratic's own misfit), a measure of how
-// rough the cost is.
+// rough the cost is. With surface_rounds > 1 the search zooms: each next round is the same grid
+// centred on the previous round's answer with half its half width (a grid too wide for the
+// cost's curvature puts the quadratic's minimum off; the next, narrower grid corrects it, while
+// still averaging over the noise as long as the grid spans more than the noise's scale). The
+// answer is the last round's.
 #pragma once
 
 #include <Eigen/Core>
@@ -26,10 +30,11 @@ namespace vs {
 struct GlobalSearchOptions {
   // "mlsl_lds" (GN_MLSL_LDS + LN_BOBYQA), "crs2" (GN_CRS2_LM), "direct" (GN_DIRECT_L),
   // "bobyqa" (local LN_BOBYQA only, from the start point), "surface" (the response surface
-  // above: grid_points^n + 1 evaluations, which must fit into max_evaluations).
+  // above: surface_rounds (grid_points^n + 1) evaluations, which must fit into max_evaluations).
   std::string algorithm = "mlsl_lds";
   int grid_points = 5;           // per free parameter (surface)
   double grid_half_width = 1.0;  // the grid's half width in parameter scales (surface)
+  int surface_rounds = 1;        // zoom rounds, each at half the previous half width (surface)
   // nlopt_srand(seed) before every search: the randomised algorithms become deterministic.
   unsigned long seed = 1;
   int max_evaluations = 200;  // forward evaluations (points), the only stopping rule that counts
@@ -48,7 +53,8 @@ struct GlobalSearchSummary {
   double surface_rms = 0.0;  // surface: rms of the grid costs about the quadratic
 };
 
-// The number of evaluations "surface" makes for `free_parameters`: grid_points^n + 1.
+// The number of evaluations "surface" makes for `free_parameters`: surface_rounds (grid_points^n +
+// 1).
 long surface_evaluations(const GlobalSearchOptions& options, int free_parameters);
 
 // Every free parameter needs finite bounds. A failed forward evaluation is given a cost of ten

@@ -164,6 +164,7 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
     if (config.optimizer.global.algorithm == "surface") {
       global["grid_points"] = config.optimizer.global.grid_points;
       global["grid_half_width"] = config.optimizer.global.grid_half_width;
+      global["surface_rounds"] = config.optimizer.global.surface_rounds;
       put_finite(global, "surface_rms", result.global.surface_rms);
     }
     j["global_search"] = global;
