@@ -357,6 +357,12 @@ int main(int argc, char** argv) {
                   fmt::format("{}/{}", r.timings.krylov_steps, r.timings.krylov_iterations).c_str(),
                   r.steps.size(), r.total_iterations, rss, devs.c_str(),
                   r.completed() ? "" : ("  FAILED: " + r.message).c_str());
+      if (!r.implicit_solve_iterations.empty()) {
+        std::string per_solve;
+        for (int it : r.implicit_solve_iterations) per_solve += fmt::format(" {}", it);
+        std::printf("#   Newton iterations per implicit solve of a step (first, second, ..):%s\n",
+                    per_solve.c_str());
+      }
       if (args.goal) {
         double force = 0.0, mean = 0.0, eps = 0.0, eps_rel = 0.0;
         for (const auto& c : cmp) {

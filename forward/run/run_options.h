@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "run/run_result.h"
+#include "stepping/step_driver_options.h"
 
 namespace vs {
 
@@ -28,6 +29,9 @@ struct RunOptions {
   // few seconds either way and keep the exact Newton path, on which two equal descriptions of a
   // law give the same run to round-off (tests/shell3d/planar_anisotropy_test.cc). INT_MAX: never.
   int krylov_min_unknowns = 4000;
+  // The step driver's constants (stepping/step_driver_options.h); a run with invalid ones fails
+  // at once with the reason.
+  StepDriverOptions driver;
 };
 
 }  // namespace vs

@@ -115,6 +115,10 @@ struct RunResult {
   std::string message;
   std::vector<std::string> warnings;  // trust caveats (e.g. elements shorter than the thickness)
   int total_iterations = 0;
+  // Implicit update: Newton iterations of the k-th velocity solve of a step (k = 0, 1, ..;
+  // StepDriverOptions::implicit_solves), summed over every step tried (the last contact round of
+  // each solve). total_iterations counts only the last solve of each accepted step.
+  std::vector<int> implicit_solve_iterations;
   int total_cutbacks = 0;
   // Solves whose Newton iteration with friction consistent with the current normal reactions did
   // not converge and that were redone with lagged reactions (see simulate.cc).

@@ -101,6 +101,7 @@ class AxisymStepper {
     coupling_.v_ref = ref->state.v;
     model_.set_geometry_coupling(&coupling_);
   }
+  void set_tolerance(double tolerance) { nl_.tolerance = tolerance; }
   void attach_touching(const AxisymState& predicted, AxisymState* corrected,
                        const ContactHolds& holds);
   void start_from(const Solved& from, Solved* to) const {
@@ -509,7 +510,13 @@ void AxisymStepper::finish(RunResult* result) const {
 }  // namespace
 
 RunResult simulate_axisymmetric(const Scene& scene, const RunOptions& options) {
-  const StepDriverOptions driver_options;
+  const StepDriverOptions& driver_options = options.driver;
+  if (std::string why; !driver_options.IsValid(&why)) {
+    RunResult failed;
+    failed.termination = Termination::kFailed;
+    failed.message = "invalid step driver options: " + why;
+    return failed;
+  }
   AxisymStepper stepper(scene, options, driver_options);
   StepDriver<AxisymStepper> driver(scene, options, driver_options, stepper);
   return driver.run();

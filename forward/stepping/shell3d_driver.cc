@@ -145,6 +145,7 @@ class Shell3dStepper {
     coupling_.v_ref = ref->state.velocity;
     model_.set_geometry_coupling(&coupling_);
   }
+  void set_tolerance(double tolerance) { nl_.tolerance = tolerance; }
   void attach_touching(const FormingState& predicted, FormingState* corrected,
                        const ContactHolds& holds);
   void start_from(const Solved& from, Solved* to) const {
@@ -589,7 +590,13 @@ void Shell3dStepper::finish(RunResult* result) const {
 }  // namespace
 
 RunResult simulate_shell3d(const Scene& scene, const RunOptions& options) {
-  const StepDriverOptions driver_options;
+  const StepDriverOptions& driver_options = options.driver;
+  if (std::string why; !driver_options.IsValid(&why)) {
+    RunResult failed;
+    failed.termination = Termination::kFailed;
+    failed.message = "invalid step driver options: " + why;
+    return failed;
+  }
   Shell3dStepper stepper(scene, options, driver_options);
   StepDriver<Shell3dStepper> driver(scene, options, driver_options, stepper);
   return driver.run();
