@@ -91,6 +91,7 @@ seed = 3
 max_evaluations = 10
 grid_points = 4
 grid_half_width = 0.5
+surface_rounds = 2
 noise_floor_factor = 10
 active_set = false
 [uncertainty]
@@ -132,6 +133,7 @@ plots = false
   EXPECT_EQ(c.data[2].measurement.provenance.front().second, "t");
   EXPECT_EQ(c.optimizer.global.algorithm, "crs2");
   EXPECT_EQ(c.optimizer.global.grid_points, 4);
+  EXPECT_EQ(c.optimizer.global.surface_rounds, 2);
   EXPECT_EQ(c.optimizer.global.grid_half_width, 0.5);
   EXPECT_EQ(c.model_forms.size(), 1u);
 }
