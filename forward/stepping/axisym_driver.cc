@@ -510,16 +510,7 @@ void AxisymStepper::finish(RunResult* result) const {
 }  // namespace
 
 RunResult simulate_axisymmetric(const Scene& scene, const RunOptions& options) {
-  const StepDriverOptions& driver_options = options.driver;
-  if (std::string why; !driver_options.IsValid(&why)) {
-    RunResult failed;
-    failed.termination = Termination::kFailed;
-    failed.message = "invalid step driver options: " + why;
-    return failed;
-  }
-  AxisymStepper stepper(scene, options, driver_options);
-  StepDriver<AxisymStepper> driver(scene, options, driver_options, stepper);
-  return driver.run();
+  return run_stepper<AxisymStepper>(scene, options);
 }
 
 }  // namespace vs

@@ -590,16 +590,7 @@ void Shell3dStepper::finish(RunResult* result) const {
 }  // namespace
 
 RunResult simulate_shell3d(const Scene& scene, const RunOptions& options) {
-  const StepDriverOptions& driver_options = options.driver;
-  if (std::string why; !driver_options.IsValid(&why)) {
-    RunResult failed;
-    failed.termination = Termination::kFailed;
-    failed.message = "invalid step driver options: " + why;
-    return failed;
-  }
-  Shell3dStepper stepper(scene, options, driver_options);
-  StepDriver<Shell3dStepper> driver(scene, options, driver_options, stepper);
-  return driver.run();
+  return run_stepper<Shell3dStepper>(scene, options);
 }
 
 }  // namespace vs::shell3d

@@ -372,4 +372,19 @@ RunResult StepDriver<Stepper>::run() {
   return result;
 }
 
+// A run of one geometry: checks the step driver's options (RunOptions::driver; invalid ones fail
+// the run at once with the reason), builds the stepper and drives it.
+template <class Stepper>
+RunResult run_stepper(const Scene& scene, const RunOptions& options) {
+  if (std::string why; !options.driver.IsValid(&why)) {
+    RunResult failed;
+    failed.termination = Termination::kFailed;
+    failed.message = "invalid step driver options: " + why;
+    return failed;
+  }
+  Stepper stepper(scene, options, options.driver);
+  StepDriver<Stepper> driver(scene, options, options.driver, stepper);
+  return driver.run();
+}
+
 }  // namespace vs
