@@ -434,6 +434,74 @@ TEST_P(Shell3dModelFd, ResidualPotentialAndTangentAgreeWithFiniteDifferences) {
              k_scale);
 }
 
+// The implicit update's geometry coupling (FormingModel::add_coupling) acts on the nodes'
+// mid-surface velocities: its potential is (1/2) sum_ab (v_a - v_ref,a) . k_ab (v_b - v_ref,b)
+// with v the global velocities of to_global() (with friction_surface = face, the map from the
+// face unknowns back to the mid-surface, G = Q [I, -C]) and k the element's membrane
+// initial-stress stiffness times the scale, summed over the elements; its force is the
+// potential's gradient.
+TEST_P(Shell3dModelFd, GeometryCouplingActsOnTheMidSurfaceVelocities) {
+  const FormingModel& m = *m_;
+  const int ne = m.num_elements();
+  const int np = shell3d::shell9_inplane_points(shell3d::Shell9Rule::kMitc9);
+  shell3d::GeometryCoupling3 coupling;
+  coupling.scale_s = 0.01;
+  coupling.membrane.assign(static_cast<std::size_t>(ne), {});
+  for (int e = 0; e < ne; ++e) {
+    for (int p = 0; p < np; ++p) {
+      shell3d::Mat3 N = shell3d::Mat3::Zero();
+      N(0, 0) = 80.0 + 5.0 * p;
+      N(1, 1) = 60.0 + 3.0 * e;
+      N(0, 1) = N(1, 0) = 10.0;
+      coupling.membrane[static_cast<std::size_t>(e)].push_back(N);
+    }
+  }
+  coupling.v_ref.resize(static_cast<std::size_t>(m.num_nodes()));
+  for (int i = 0; i < m.num_nodes(); ++i)
+    coupling.v_ref[static_cast<std::size_t>(i)] = shell3d::Vec3(0.1 * std::sin(i), 0.0, 0.5);
+  FormingSystem without, with;
+  m_->evaluate(s_, x_, shell3d::Shell9Stiffness::kNone, 0.0, &without);
+  m_->set_geometry_coupling(&coupling);
+  m_->prepare(s_);
+  m_->evaluate(s_, x_, shell3d::Shell9Stiffness::kNone, 0.0, &with);
+  std::vector<shell3d::Vec3> v, w;
+  m.to_global(x_, &v, &w);
+  double expected = 0.0;
+  for (int e = 0; e < ne; ++e) {
+    const auto& conn = m.mesh().elements[static_cast<std::size_t>(e)];
+    const Eigen::Matrix<double, 9, 9> k =
+        coupling.scale_s *
+        shell3d::shell9_stress_stiffness(m.geometry(s_, e), shell3d::Shell9Rule::kMitc9,
+                                         coupling.membrane[static_cast<std::size_t>(e)]);
+    for (int a = 0; a < 9; ++a)
+      for (int b = 0; b < 9; ++b) {
+        const auto ia = static_cast<std::size_t>(conn[static_cast<std::size_t>(a)]);
+        const auto ib = static_cast<std::size_t>(conn[static_cast<std::size_t>(b)]);
+        expected += 0.5 * k(a, b) * (v[ia] - coupling.v_ref[ia]).dot(v[ib] - coupling.v_ref[ib]);
+      }
+  }
+  ASSERT_GT(expected, 0.0);
+  EXPECT_NEAR(with.potential - without.potential, expected, 1e-9 * expected);
+  // Its force is the potential's gradient (at the free unknowns).
+  const int n = m.num_dofs();
+  const auto& mask = m.prescribed_mask();
+  double scale = 0.0, err = 0.0;
+  for (int j = 0; j < n; ++j) {
+    if (mask[static_cast<std::size_t>(j)]) continue;
+    const double h = 1e-3 * v0_;
+    Eigen::VectorXd xp = x_, xm = x_;
+    xp(j) += h;
+    xm(j) -= h;
+    FormingSystem p, q;
+    m_->evaluate(s_, xp, shell3d::Shell9Stiffness::kNone, 0.0, &p);
+    m_->evaluate(s_, xm, shell3d::Shell9Stiffness::kNone, 0.0, &q);
+    scale = std::max(scale, std::abs(with.residual(j)));
+    err = std::max(err, std::abs((p.potential - q.potential) / (2 * h) - with.residual(j)));
+  }
+  EXPECT_LT(err, 1e-6 * scale);
+  m_->set_geometry_coupling(nullptr);
+}
+
 INSTANTIATE_TEST_SUITE_P(MidAndFace, Shell3dModelFd,
                          ::testing::Values(FrictionSurface::kMid, FrictionSurface::kFace));
 
