@@ -129,10 +129,9 @@ void GapHolder3::add(int e, const Eigen::VectorXd& qe, bool want_matrix,
   const std::vector<Constraint>& list = constraints_[static_cast<std::size_t>(e)];
   if (list.empty()) return;
   assert(qe.size() == 45);
-  const Eigen::Matrix<double, 45, 1> v = qe;
   const bool matrix = want_matrix && out->stiffness.rows() == qe.size();
   for (const Constraint& c : list) {
-    const double violation = c.rate_bound - c.b.dot(v);
+    const double violation = c.rate_bound - c.b.dot(qe);
     if (violation <= 0.0) continue;
     // Phi = k V violation^2 / 2; dPhi/dq = -k V violation b; d2Phi/dq2 = k V b b^T.
     out->potential += 0.5 * c.stiffness * violation * violation;
@@ -148,7 +147,6 @@ void GapHolder3::add_element_forces(int e, const Eigen::VectorXd& qe,
   const auto& conn = mesh_->elements[ue];
   const std::array<char, 9>& gap = gap_nodes_[ue];
   assert(qe.size() == 45);
-  const Eigen::Matrix<double, 45, 1> v = qe;
   // Areas of the element's nodes in the gap, to share the force of the constrained nodes outside.
   double gap_area = 0.0;
   std::array<double, 9> share{};
@@ -159,7 +157,7 @@ void GapHolder3::add_element_forces(int e, const Eigen::VectorXd& qe,
     }
   }
   for (const Constraint& c : constraints_[ue]) {
-    const double violation = c.rate_bound - c.b.dot(v);
+    const double violation = c.rate_bound - c.b.dot(qe);
     if (violation <= 0.0) continue;
     const double force = c.penalty * violation * c.area;  // pressure times area share
     if (gap[static_cast<std::size_t>(c.local)]) {

@@ -36,11 +36,7 @@ std::vector<Point> read_reference() {
   std::ifstream in(path);
   EXPECT_TRUE(in.good()) << path;
   std::string line;
-  auto next = [&in, &line] {
-    if (!std::getline(in, line)) return false;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // the file has CRLF ends
-    return true;
-  };
+  auto next = [&in, &line] { return test::getline_crlf(in, line); };
   next();
   EXPECT_EQ(line, "x0_mm,y0_mm,r0_mm,r_mm,z_mm,thickness_mm,eps_thickness,punch_gap_mm");
   std::vector<Point> rows;

@@ -30,11 +30,7 @@ std::vector<ReferenceRow> read_reference() {
   std::ifstream in(std::string(VS_SOURCE_DIR) +
                    "/experiments/08_continuum_reference/results/ci_reference_ex1_mu010.csv");
   std::string line;
-  auto next = [&in, &line] {
-    if (!std::getline(in, line)) return false;
-    if (!line.empty() && line.back() == '\r') line.pop_back();  // the file has CRLF ends
-    return true;
-  };
+  auto next = [&in, &line] { return test::getline_crlf(in, line); };
   next();
   EXPECT_EQ(line,
             "punch_travel_mm,punch_force_N,eps_thickness_r0_1.7754mm,eps_thickness_r0_2.959mm");

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <istream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,6 +12,13 @@
 #include "scene/scene_table.h"
 
 namespace vs::test {
+
+// std::getline without a trailing '\r' (the stored reference CSVs have CRLF ends).
+inline bool getline_crlf(std::istream& in, std::string& line) {
+  if (!std::getline(in, line)) return false;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return true;
+}
 
 inline std::string scene_path(const std::string& name) {
   return std::string(VS_SOURCE_DIR) + "/data/scenes/" + name;
