@@ -118,10 +118,10 @@ int main(int argc, char** argv) {
     std::vector<Row> rows;
     using Super = Eigen::CholmodSupernodalLLT<vs::SparseMatrix, Eigen::Lower>;
     using Simp = Eigen::CholmodSimplicialLLT<vs::SparseMatrix, Eigen::Lower>;
-    rows.push_back(time_cholmod<Super>("cholmod supernodal (default ordering)", -1, true, A, b,
-                                       repeats));
-    rows.push_back(time_cholmod<Super>("cholmod supernodal, METIS", CHOLMOD_METIS, true, A, b,
-                                       repeats));
+    rows.push_back(
+        time_cholmod<Super>("cholmod supernodal (default ordering)", -1, true, A, b, repeats));
+    rows.push_back(
+        time_cholmod<Super>("cholmod supernodal, METIS", CHOLMOD_METIS, true, A, b, repeats));
     rows.push_back(
         time_cholmod<Super>("cholmod supernodal, AMD", CHOLMOD_AMD, true, A, b, repeats));
     rows.push_back(
@@ -140,9 +140,9 @@ int main(int argc, char** argv) {
       csv << fmt::format("{},{},{},{},{:.5g},{:.5g},{:.5g},{:.6g},{:.6g},{:.3g}\n", n, A.rows(),
                          nnz, r.name, r.analyse_s, r.factor_s, r.solve_s, r.factor_nnz, r.flops,
                          r.residual);
-      md += fmt::format("| {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} |\n", n,
-                        A.rows(), r.name, r.analyse_s, r.factor_s, r.solve_s, r.factor_nnz,
-                        r.flops);
+      md +=
+          fmt::format("| {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} |\n", n,
+                      A.rows(), r.name, r.analyse_s, r.factor_s, r.solve_s, r.factor_nnz, r.flops);
     }
   }
   std::ofstream(args.out_dir + "/summary.md") << md;

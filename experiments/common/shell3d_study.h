@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "common/axisym_comparison.h"
 #include "harness.h"
+#include "model/forming_fields.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "common/axisym_comparison.h"
 #include "stepping/shell3d_driver.h"
-#include "model/forming_fields.h"
 #include "table.h"
 
 namespace vsx {

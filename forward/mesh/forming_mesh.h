@@ -10,8 +10,8 @@
 // their other halves "y0_neg" (x <= 0), "x0_neg" (y <= 0), "diagonal_neg" (x = y <= 0).
 #pragma once
 
-#include "scene/scene.h"
 #include "mesh/shell_mesh.h"
+#include "scene/scene.h"
 
 namespace vs::shell3d {
 

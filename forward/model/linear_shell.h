@@ -7,9 +7,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "model/shell_assembler.h"
 #include "element/shell9.h"
 #include "linalg/sparse_spd_solver.h"
+#include "model/shell_assembler.h"
 
 namespace vs::shell3d {
 

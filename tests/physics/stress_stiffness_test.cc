@@ -56,9 +56,9 @@ TEST(StressStiffness, AxisymCompressionIsDropped) {
   const Axisym2Geometry g{10.0, 0.0, 12.0, 0.5};
   EXPECT_EQ(axisym2_stress_stiffness(g, -30.0, -20.0).norm(), 0.0);
   // Tension in one direction only: the other term alone.
-  EXPECT_NEAR((axisym2_stress_stiffness(g, 30.0, -20.0) - axisym2_stress_stiffness(g, 30.0, 0.0))
-                  .norm(),
-              0.0, 1e-14);
+  EXPECT_NEAR(
+      (axisym2_stress_stiffness(g, 30.0, -20.0) - axisym2_stress_stiffness(g, 30.0, 0.0)).norm(),
+      0.0, 1e-14);
 }
 
 // A flat square 9-node element [0, a]^2 at z = 0, its nodes in lagrange9 order.

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "model/linear_shell.h"
-#include "mesh/mesh_generators.h"
 #include "element/quadrature.h"
+#include "mesh/mesh_generators.h"
+#include "model/linear_shell.h"
 
 namespace vs::shell3d::bench {
 

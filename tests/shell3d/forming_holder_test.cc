@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
+#include "common/axisym_comparison.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
-#include "common/axisym_comparison.h"
 #include "stepping/shell3d_driver.h"
 
 namespace vs::shell3d {

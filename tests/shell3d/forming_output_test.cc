@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "output/vtu_writer.h"
-#include "model/forming_fields.h"
 #include "mesh/mesh_generators.h"
+#include "model/forming_fields.h"
+#include "output/vtu_writer.h"
 
 namespace vs::shell3d {
 namespace {

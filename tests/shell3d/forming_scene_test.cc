@@ -6,11 +6,11 @@
 #include <string>
 
 #include "core/error.h"
+#include "mesh/forming_mesh.h"
+#include "model/forming_model.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "stepping/shell3d_driver.h"
-#include "mesh/forming_mesh.h"
-#include "model/forming_model.h"
 
 namespace vs::shell3d {
 namespace {

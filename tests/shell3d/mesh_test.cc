@@ -4,9 +4,9 @@
 #include <Eigen/Geometry>
 #include <numbers>
 
-#include "mesh_area.h"
-#include "mesh/mesh_generators.h"
 #include "element/shell9.h"
+#include "mesh/mesh_generators.h"
+#include "mesh_area.h"
 #include "model/shell_model.h"
 
 namespace vs::shell3d {

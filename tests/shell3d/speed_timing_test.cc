@@ -10,9 +10,9 @@
 #include <ctime>
 #include <string>
 
-#include "scene/load_scene.h"
-#include "model/forming_model.h"
 #include "linalg/sparse_spd_solver.h"
+#include "model/forming_model.h"
+#include "scene/load_scene.h"
 
 namespace vs::shell3d {
 namespace {

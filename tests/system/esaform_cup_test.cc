@@ -55,8 +55,8 @@ TEST(EsaformCup, FixedGapHolderDrawsCompletely) {
 // 0.07 on it, on both faces, locks the flange: the rim never reaches the die opening and the wall
 // tears (thinning 67 % at 42 mm); at 1.2 mm it draws (the test above).
 TEST(EsaformCup, FrictionOnTheGapHolderPressureLocksTheBenchmarkGap) {
-  const vs::Scene locked = vsx::make_cup_scene(
-      VS_SOURCE_DIR, {{"tool.holder.gap_mm", "1.04"}}, "ex3_flat_punch_cup_fixed_gap");
+  const vs::Scene locked = vsx::make_cup_scene(VS_SOURCE_DIR, {{"tool.holder.gap_mm", "1.04"}},
+                                               "ex3_flat_punch_cup_fixed_gap");
   const vs::RunResult r = vs::simulate(locked);
   const vsx::CupHeight cup = vsx::evaluate_cup(r, vsx::cup_geometry(locked));
   EXPECT_FALSE(cup.drawn) << "drawn at " << cup.travel_mm << " mm";

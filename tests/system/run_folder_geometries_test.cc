@@ -67,8 +67,8 @@ TEST(RunFolder, BothGeometriesWriteTheSameFilesAndColumns) {
     EXPECT_TRUE(fs::exists(a / f)) << "axisymmetric " << f;
     EXPECT_TRUE(fs::exists(s / f)) << "3D " << f;
   }
-  for (const char* f : {"load_travel.csv", "thinnest_point.csv", "fld_points.csv",
-                        "strain_paths.csv"}) {
+  for (const char* f :
+       {"load_travel.csv", "thinnest_point.csv", "fld_points.csv", "strain_paths.csv"}) {
     EXPECT_EQ(header(a / f), header(s / f)) << f;
   }
   // Profiles: the meridian in one geometry, the lines x, y, diagonal in the other, same columns.
