@@ -11,6 +11,9 @@
 #ifndef VS_GIT_DESCRIBE
 #define VS_GIT_DESCRIBE "unknown"
 #endif
+#ifndef VS_MARCH
+#define VS_MARCH ""
+#endif
 
 namespace vs {
 
@@ -27,6 +30,11 @@ std::string compiler_version() {
 #else
   return "unknown";
 #endif
+}
+
+std::string instruction_set() {
+  const std::string march = VS_MARCH;
+  return march.empty() ? "baseline" : "-march=" + march;
 }
 
 std::string eigen_version() {

@@ -15,6 +15,7 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"version", program_version()},
                   {"git_describe", program_git_describe()},
                   {"compiler", compiler_version()},
+                  {"instruction_set", instruction_set()},
                   {"eigen_version", eigen_version()}};
   j["geometry"] = result.geometry == Geometry::kShell3d ? "shell3d" : "axisymmetric";
   j["built"] = result.built;
