@@ -3,9 +3,9 @@
 #                   machine runs it, else the compiler's baseline (x86-64: SSE2)
 #   none            the compiler's baseline
 #   any other value passed as -march=VALUE (e.g. native, x86-64-v3)
-# Measured (experiments/01 and 05, issue 14): x86-64-v3 makes the 3D element work 1.3-1.7x faster
-# (Eigen's matrix kernels use 4-wide AVX2 and FMA instead of 2-wide SSE2); x86-64-v4 (AVX-512)
-# is not faster on the 2-core workplace machine.
+# Measured (experiments/05, "Vector instructions", issue 14): x86-64-v3 makes the 3D element work
+# 1.5-1.7x faster (Eigen's matrix kernels use 4-wide AVX2 and FMA instead of 2-wide SSE2);
+# x86-64-v4 (AVX-512) is not faster on the 2-core workplace machine.
 #
 # Eigen with AVX assumes 32-byte aligned heap blocks and then allocates them by hand; Eigen 3.4.0
 # mixes that allocator with plain realloc/free in its sparse Cholesky (SimplicialLDLT with AMD:
