@@ -325,6 +325,15 @@ class Shell3dModelFd : public ::testing::TestWithParam<FrictionSurface> {
     v0_ = setup_.sc.numerics.friction_regularisation * setup_.sc.process.punch_speed_mm_per_s;
     x_ = shell_velocity(*m_, v0_);
   }
+  // The central-difference points of unknown j, x_ -+ h e_j with h = 1e-3 v0; returns h.
+  double central_points(int j, Eigen::VectorXd* xm, Eigen::VectorXd* xp) const {
+    const double h = 1e-3 * v0_;
+    *xm = x_;
+    *xp = x_;
+    (*xm)(j) -= h;
+    (*xp)(j) += h;
+    return h;
+  }
   Shell3dSetup setup_;
   std::unique_ptr<FormingModel> m_;
   FormingState s_;
@@ -401,10 +410,8 @@ TEST_P(Shell3dModelFd, ResidualPotentialAndTangentAgreeWithFiniteDifferences) {
   double k_scale = 0.0, k_err = 0.0, f_scale = 0.0, f_err = 0.0, r_scale = 0.0, g_err = 0.0;
   for (int j = 0; j < n; ++j) {
     if (mask[static_cast<std::size_t>(j)]) continue;
-    const double h = 1e-3 * v0_;
-    Eigen::VectorXd xp = x_, xm = x_;
-    xp(j) += h;
-    xm(j) -= h;
+    Eigen::VectorXd xm, xp;
+    const double h = central_points(j, &xm, &xp);
     FormingSystem p, q, pb, qb;
     m_->evaluate(s_, xp, shell3d::Shell9Stiffness::kNone, 0.0, &p);
     m_->evaluate(s_, xm, shell3d::Shell9Stiffness::kNone, 0.0, &q);
@@ -488,10 +495,8 @@ TEST_P(Shell3dModelFd, GeometryCouplingActsOnTheMidSurfaceVelocities) {
   double scale = 0.0, err = 0.0;
   for (int j = 0; j < n; ++j) {
     if (mask[static_cast<std::size_t>(j)]) continue;
-    const double h = 1e-3 * v0_;
-    Eigen::VectorXd xp = x_, xm = x_;
-    xp(j) += h;
-    xm(j) -= h;
+    Eigen::VectorXd xm, xp;
+    const double h = central_points(j, &xm, &xp);
     FormingSystem p, q;
     m_->evaluate(s_, xp, shell3d::Shell9Stiffness::kNone, 0.0, &p);
     m_->evaluate(s_, xm, shell3d::Shell9Stiffness::kNone, 0.0, &q);
