@@ -8,12 +8,14 @@
 //                     [--travel MM] [--outputs A,B,C] [--increment MM] [--axisym-elements N]
 //                     [--scene FILE] [--csv FILE] [--speed-setting] [--per-length X]
 //                     [--cutoff X] [--implicit] [--no-events] [--krylov-min N] [--goal]
+//                     [--double-preconditioner]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
 // numerics.time_integration = implicit (the reference stays at its defaults); --no-events: with
 // numerics.contact_events = false; --krylov-min N: RunOptions::krylov_min_unknowns (Krylov steps on
-// the held factorisation from N unknowns; a huge N turns them off). --goal: after each
+// the held factorisation from N unknowns; a huge N turns them off); --double-preconditioner:
+// RunOptions::single_precision_preconditioner = false. --goal: after each
 // run, the issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric
 // solver at every output travel, in under 10 s wall) with the figures it rests on.
 //
@@ -83,6 +85,7 @@ struct Args {
   bool no_events = false;                 // --no-events: numerics.contact_events = false
   bool goal = false;
   int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
+  bool double_preconditioner = false;
   std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
@@ -92,7 +95,8 @@ Args parse(int argc, char** argv) {
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--quick" || key == "--speed-setting" || key == "--goal" || key == "--implicit" ||
-        key == "--no-events") {
+        key == "--no-events" || key == "--double-preconditioner") {
+      if (key == "--double-preconditioner") a.double_preconditioner = true;
       if (key == "--no-events") a.no_events = true;
       if (key == "--quick") a.study = a.quick = true;
       if (key == "--implicit") a.implicit = true;
@@ -330,6 +334,7 @@ int main(int argc, char** argv) {
       const auto t0 = std::chrono::steady_clock::now();
       vs::RunOptions run_options;
       run_options.krylov_min_unknowns = args.krylov_min;
+      run_options.single_precision_preconditioner = !args.double_preconditioner;
       const vs::RunResult r = vs::shell3d::simulate_shell3d(scene, run_options);
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -24,6 +24,10 @@ class LinearSolver {
   virtual bool factorize() = 0;
   // Overwrites b with K^-1 b, using the last successful factorisation.
   virtual void solve_in_place(Eigen::VectorXd* b) const = 0;
+  // Overwrites b with an approximation of K^-1 b, for steps that are approximate anyway (chord
+  // steps on an earlier matrix): a solver may use a cheaper copy of its factorisation (the
+  // sparse solver's single-precision one). By default solve_in_place.
+  virtual void solve_approximately_in_place(Eigen::VectorXd* b) const { solve_in_place(b); }
   // A cheap lower bound of the condition number of the last factorised matrix, 1 if unknown.
   virtual double condition_estimate() const { return 1.0; }
   // Whether a factorisation is held (a solve may then start with chord steps on it).

@@ -16,6 +16,9 @@ class SparseCholeskySolver : public LinearSolver {
       : solver_(preferred) {}
   // The matrix to factorise from now on (must outlive the solver or be reset).
   void set_matrix(const SparseMatrix* A) { A_ = A; }
+  // The preconditioner of solve_preconditioned and solve_approximately_in_place in single
+  // precision (SparseSpdSolver).
+  void set_single_precision_preconditioner(bool on) { solver_.set_single_precision(on); }
 
   bool factorize() override {
     if (solver_.analyses() == 0) solver_.analyze(*A_);
@@ -24,6 +27,12 @@ class SparseCholeskySolver : public LinearSolver {
   }
   void solve_in_place(Eigen::VectorXd* b) const override {
     Eigen::VectorXd x = solver_.solve(*b);  // no aliasing of b in the solve
+    b->swap(x);
+  }
+  // The preconditioner's solve (single precision by default, SparseSpdSolver::precondition).
+  void solve_approximately_in_place(Eigen::VectorXd* b) const override {
+    Eigen::VectorXd x;
+    solver_.precondition(*b, &x);
     b->swap(x);
   }
   // PCG on the lower triangle of the matrix (the part the factorisation reads) with the held
@@ -36,7 +45,7 @@ class SparseCholeskySolver : public LinearSolver {
         [this](const Eigen::VectorXd& p, Eigen::VectorXd* q) {
           q->noalias() = A_->selfadjointView<Eigen::Lower>() * p;
         },
-        [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { *z = solver_.solve(r); }, b, x,
+        [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { solver_.precondition(r, z); }, b, x,
         tolerance, max_iterations);
     *iterations = sum.iterations;
     return sum.converged;

@@ -1,5 +1,7 @@
 #include "linalg/sparse_spd_solver.h"
 
+#include "linalg/dynamic_teams.h"
+
 namespace vs {
 
 SparseSpdSolver::SparseSpdSolver(SparseSolverKind preferred)
@@ -18,6 +20,7 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
   }
   if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
     cholmod_ = std::make_unique<Cholmod>();
+    const DynamicTeams teams;
     cholmod_->analyzePattern(A);
   } else {
     ldlt_ = std::make_unique<Ldlt>();
@@ -27,8 +30,12 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
 }
 
 bool SparseSpdSolver::factorize(const SparseMatrix& A) {
+  single_current_ = false;
   if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
-    cholmod_->factorize(A);
+    {
+      const DynamicTeams teams;
+      cholmod_->factorize(A);
+    }
     if (cholmod_->info() == Eigen::Success) {
       active_ = SparseSolverKind::kCholmodSupernodal;
       return true;
@@ -45,8 +52,22 @@ bool SparseSpdSolver::factorize(const SparseMatrix& A) {
 }
 
 Eigen::VectorXd SparseSpdSolver::solve(const Eigen::VectorXd& b) const {
-  if (active_ == SparseSolverKind::kCholmodSupernodal) return cholmod_->solve(b);
+  if (active_ == SparseSolverKind::kCholmodSupernodal) {
+    const DynamicTeams teams;
+    return cholmod_->solve(b);
+  }
   return ldlt_->solve(b);
+}
+
+void SparseSpdSolver::precondition(const Eigen::VectorXd& r, Eigen::VectorXd* z) const {
+  if (single_precision_ && active_ == SparseSolverKind::kCholmodSupernodal) {
+    if (!single_current_) single_current_ = single_.assign(*cholmod_->factor());
+    if (single_current_) {
+      single_.solve(r, z);
+      return;
+    }
+  }
+  *z = solve(r);
 }
 
 }  // namespace vs

@@ -4,9 +4,13 @@
 // 1e5-dof shell matrix ~2x faster than SimplicialLDLT on this machine, with a 7-15x faster
 // analysis. Both read the lower triangle of the (full) symmetric matrix.
 // kAuto (the default) picks SimplicialLDLT below kAutoCholmodDofs unknowns: measured on the ex4a
-// quarter disc (CPU time per numeric factorisation, Nov 2026), 1 085 dofs: LDLT 2.7 ms, CHOLMOD
-// supernodal 4.6-6.2 ms (its per-call overhead: a transposed copy, small supernodes); 4 085
-// dofs: 23-26 ms / 28-31 ms; 15 845 dofs: 310 ms / 190-210 ms.
+// quarter disc (a numeric factorisation, quiet 2-core machine, experiments/09_linear_solver),
+// with CHOLMOD's OpenMP teams capped (linalg/dynamic_teams.h; uncapped they cost it 3-4x at these
+// sizes): 1 085 dofs LDLT 1.9 ms, CHOLMOD supernodal 1.4 ms; 4 085 dofs 15.7 / 9.0 ms; 15 845
+// dofs 154 / 68 ms.
+// precondition() applies the inverse of the held factorisation as a preconditioner: with a CHOLMOD
+// factor and single_precision set (the default), through a single-precision copy of the factor
+// (linalg/supernodal_factor.h), made at the first call after each factorisation.
 #pragma once
 
 #include <Eigen/CholmodSupport>
@@ -14,12 +18,13 @@
 #include <memory>
 
 #include "linalg/sparse_matrix.h"
+#include "linalg/supernodal_factor.h"
 
 namespace vs {
 
 enum class SparseSolverKind { kCholmodSupernodal, kSimplicialLDLT, kAuto };
 
-inline constexpr int kAutoCholmodDofs = 8000;
+inline constexpr int kAutoCholmodDofs = 1000;  // 8 000 before the teams were capped
 
 // What kAuto resolves to for a matrix of `dofs` unknowns.
 inline SparseSolverKind auto_sparse_solver(int dofs) {
@@ -37,18 +42,28 @@ class SparseSpdSolver {
   // Numeric factorisation; returns false if both CHOLMOD and the fallback fail.
   bool factorize(const SparseMatrix& A);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // z ~ A^-1 r for a preconditioner: solve(), or the single-precision solves (see above).
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
+  void set_single_precision(bool on) { single_precision_ = on; }
   // The solver that produced the last successful factorisation.
   SparseSolverKind active() const { return active_; }
   int analyses() const { return analyses_; }
 
  private:
-  using Cholmod = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+  // Eigen's CHOLMOD wrapper with its factor (a protected member) readable.
+  class Cholmod : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+   public:
+    const cholmod_factor* factor() const { return m_cholmodFactor; }
+  };
   using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
   SparseSolverKind requested_, preferred_, active_;  // preferred_: kAuto resolved at analyze()
   std::unique_ptr<Cholmod> cholmod_;
   std::unique_ptr<Ldlt> ldlt_;
   bool ldlt_analyzed_ = false;
   int analyses_ = 0;
+  bool single_precision_ = true;
+  mutable SinglePrecisionFactor single_;
+  mutable bool single_current_ = false;  // single_ copies the last CHOLMOD factorisation
 };
 
 }  // namespace vs

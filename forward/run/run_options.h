@@ -29,6 +29,11 @@ struct RunOptions {
   // few seconds either way and keep the exact Newton path, on which two equal descriptions of a
   // law give the same run to round-off (tests/shell3d/planar_anisotropy_test.cc). INT_MAX: never.
   int krylov_min_unknowns = 4000;
+  // 3D runs: the conjugate gradients of the Krylov steps precondition with, and the chord steps
+  // solve with, a single-precision copy of the held CHOLMOD factorisation
+  // (linalg/supernodal_factor.h) rather than the double one. A Newton step on a matrix
+  // just factorised solves in double precision either way.
+  bool single_precision_preconditioner = true;
   // The step driver's constants (stepping/step_driver_options.h); a run with invalid ones fails
   // at once with the reason.
   StepDriverOptions driver;

@@ -104,10 +104,14 @@ class Shell3dStepper {
     // implicit at 0.25 element lengths, no events; quiet 2-core machine): n = 16 to 30 mm,
     // 758 -> 127 factorisations and 171 -> 91 s wall with the same outputs to 4 digits; to
     // 10 mm, at most 6 / 10 / 15 CG iterations: 42 / 38 / 48 s, floor 3e-3 / 1e-2 / 3e-2:
-    // 37.0 / 38.0 / 39.7 s. A CG iteration costs a triangular solve (~5 ms at n = 16 against
-    // 0.18 s for a factorisation).
+    // 37.0 / 38.0 / 39.7 s. Re-measured with the capped CHOLMOD teams and the single-precision
+    // preconditioner (a CG iteration ~1.7 ms at n = 16 against 68 ms for a factorisation): at
+    // most 10 / 16 / 24 iterations, 16.2 / 16.6 / 16.4 s to 10 mm.
     nl_.krylov_max_iterations = model_.num_dofs() >= options.krylov_min_unknowns ? 10 : 0;
     nl_.krylov_tolerance = 1e-2;
+    // The single-precision factor with the Krylov steps: below, a run keeps the exact path.
+    linear_.set_single_precision_preconditioner(options.single_precision_preconditioner &&
+                                                nl_.krylov_max_iterations > 0);
     fields_->mesh = model_.mesh();
   }
 
