@@ -26,5 +26,4 @@ class DynamicTeams {
   int was_;
 };
 
-
 }  // namespace vs

@@ -1,7 +1,7 @@
-// LinearSolver over a sparse symmetric matrix that lives elsewhere (the 3D assembler's fixed
-// pattern): SparseSpdSolver (CHOLMOD supernodal or SimplicialLDLT, linalg/sparse_spd_solver.h)
-// with the symbolic analysis done on the first factorisation and kept (the pattern never
-// changes).
+// LinearSolver over a sparse symmetric matrix, stored in full (both triangles), that lives
+// elsewhere (the 3D assembler's fixed pattern): SparseSpdSolver (CHOLMOD supernodal or
+// SimplicialLDLT, linalg/sparse_spd_solver.h) with the symbolic analysis done on the first
+// factorisation and kept (the pattern never changes).
 #pragma once
 
 #include "linalg/linear_solver.h"
@@ -35,15 +35,24 @@ class SparseCholeskySolver : public LinearSolver {
     solver_.precondition(*b, &x);
     b->swap(x);
   }
-  // PCG on the lower triangle of the matrix (the part the factorisation reads) with the held
-  // factorisation as the preconditioner.
+  // PCG on the matrix with the held factorisation as the preconditioner. The matrix is stored in
+  // full and symmetric, so its compressed columns read as compressed rows are the same matrix: the
+  // product runs row by row (one dot product a row, in parallel under OpenMP, each row summed in
+  // a fixed order: the same bits for any team).
   bool solve_preconditioned(const Eigen::VectorXd& b, Eigen::VectorXd* x, double tolerance,
                             int max_iterations, int* iterations) const override {
     *iterations = 0;
     if (!factorized_) return false;
     const PcgSummary sum = preconditioned_cg(
         [this](const Eigen::VectorXd& p, Eigen::VectorXd* q) {
-          q->noalias() = A_->selfadjointView<Eigen::Lower>() * p;
+          if (A_->isCompressed()) {
+            const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> rows(
+                A_->rows(), A_->cols(), A_->nonZeros(), A_->outerIndexPtr(), A_->innerIndexPtr(),
+                A_->valuePtr());
+            q->noalias() = rows * p;
+          } else {
+            q->noalias() = *A_ * p;
+          }
         },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { solver_.precondition(r, z); }, b, x,
         tolerance, max_iterations);

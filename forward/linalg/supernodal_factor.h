@@ -23,10 +23,10 @@
 // 16.1 / 5.9 ms.
 #pragma once
 
+#include <cholmod.h>
+
 #include <Eigen/Core>
 #include <vector>
-
-#include <cholmod.h>
 
 namespace vs {
 

@@ -1,9 +1,9 @@
 // linalg/dynamic_teams.h: inside the scope a region that asks for a fixed team of 4 (as CHOLMOD's
 // do) gets no more threads than this thread's team size; the scope restores the setting.
+#include "linalg/dynamic_teams.h"
+
 #include <gtest/gtest.h>
 #include <omp.h>
-
-#include "linalg/dynamic_teams.h"
 
 namespace vs {
 namespace {
