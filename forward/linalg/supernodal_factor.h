@@ -19,8 +19,8 @@
 // recurrences themselves stay in double precision. What it buys: the triangular solves stream the
 // factor once forward and once backward, and they are bound by that traffic (2e6 entries at
 // n = 16 in ex4a, 1.1e7 at n = 32). Measured (experiments/09_linear_solver, warm): n = 16
-// CHOLMOD's solve 2.15 ms, this traversal in double 1.56 ms, in single 0.86 ms; n = 32: 23.3 /
-// 16.1 / 5.9 ms.
+// CHOLMOD's solve 1.96-2.15 ms, this traversal in double 1.5 ms, in single 0.86 ms; n = 32: 23-26 /
+// 16-17 / 6-9 ms.
 #pragma once
 
 #include <cholmod.h>
