@@ -20,6 +20,7 @@
 #include "common/harness.h"
 #include "common/table.h"
 #include "linalg/dynamic_teams.h"
+#include "linalg/sparse_spd_solver.h"
 #include "linalg/supernodal_factor.h"
 #include "model/forming_model.h"
 
@@ -86,12 +87,6 @@ Row time_cholmod(const std::string& name, int ordering, bool supernodal, const v
   return r;
 }
 
-// Eigen's CHOLMOD wrapper with its factor (a protected member) readable.
-class SparseFactorAccess : public Eigen::CholmodSupernodalLLT<vs::SparseMatrix, Eigen::Lower> {
- public:
-  const cholmod_factor* factor() const { return m_cholmodFactor; }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -132,7 +127,7 @@ int main(int argc, char** argv) {
     Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
     const int repeats = n >= 32 ? 3 : 5;
     std::vector<Row> rows;
-    using Super = Eigen::CholmodSupernodalLLT<vs::SparseMatrix, Eigen::Lower>;
+    using Super = Eigen::CholmodSupernodalLLT<vs::SparseMatrix, Eigen::Upper>;  // as the product
     using Simp = Eigen::CholmodSimplicialLLT<vs::SparseMatrix, Eigen::Lower>;
     rows.push_back(
         time_cholmod<Super>("cholmod supernodal (default ordering)", -1, true, A, b, repeats));
@@ -150,16 +145,15 @@ int main(int argc, char** argv) {
     }
     // The solves the Krylov steps make with a held factor: CHOLMOD's own, the same factor's
     // supernodes traversed in double and in single precision (linalg/supernodal_factor.h),
-    // and a product with the matrix (one per CG iteration).
+    // and a product with the matrix (one per CG iteration), all as the product makes them.
     {
-      const vs::DynamicTeams teams;
-      SparseFactorAccess super;
-      super.analyzePattern(A);
+      vs::SparseSpdSolver super(vs::SparseSolverKind::kCholmodSupernodal);
+      super.analyze(A);
       super.factorize(A);
       vs::SupernodalFactor<float> f32;
       vs::SupernodalFactor<double> f64;
-      f32.assign(*super.factor());
-      f64.assign(*super.factor());
+      f32.assign(*super.held_cholmod_factor());
+      f64.assign(*super.held_cholmod_factor());
       const Eigen::VectorXd x_ref = super.solve(b);
       Eigen::VectorXd z;
       auto time_it = [&](auto&& apply) {
@@ -176,7 +170,7 @@ int main(int argc, char** argv) {
       const double d64 = (z - x_ref).norm() / x_ref.norm();
       const double t32 = time_it([&] { f32.solve(b, &z); });
       const double d32 = (z - x_ref).norm() / x_ref.norm();
-      const double tmv = time_it([&] { z.noalias() = A.selfadjointView<Eigen::Lower>() * b; });
+      const double tmv = time_it([&] { vs::multiply_symmetric(A, b, &z); });
       fmt::print(
           "n {:2d} dofs {:6d}: solve with the factor: CHOLMOD {:.2f} ms, supernodes in double "
           "{:.2f} ms (rel. diff {:.1e}), in single {:.2f} ms (rel. diff {:.1e}); matrix product "

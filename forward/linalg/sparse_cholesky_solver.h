@@ -35,25 +35,14 @@ class SparseCholeskySolver : public LinearSolver {
     solver_.precondition(*b, &x);
     b->swap(x);
   }
-  // PCG on the matrix with the held factorisation as the preconditioner. The matrix is stored in
-  // full and symmetric, so its compressed columns read as compressed rows are the same matrix: the
-  // product runs row by row (one dot product a row, in parallel under OpenMP, each row summed in
-  // a fixed order: the same bits for any team).
+  // PCG on the matrix (multiply_symmetric, linalg/sparse_matrix.h) with the held factorisation as
+  // the preconditioner.
   bool solve_preconditioned(const Eigen::VectorXd& b, Eigen::VectorXd* x, double tolerance,
                             int max_iterations, int* iterations) const override {
     *iterations = 0;
     if (!factorized_) return false;
     const PcgSummary sum = preconditioned_cg(
-        [this](const Eigen::VectorXd& p, Eigen::VectorXd* q) {
-          if (A_->isCompressed()) {
-            const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::RowMajor, int>> rows(
-                A_->rows(), A_->cols(), A_->nonZeros(), A_->outerIndexPtr(), A_->innerIndexPtr(),
-                A_->valuePtr());
-            q->noalias() = rows * p;
-          } else {
-            q->noalias() = *A_ * p;
-          }
-        },
+        [this](const Eigen::VectorXd& p, Eigen::VectorXd* q) { multiply_symmetric(*A_, p, q); },
         [this](const Eigen::VectorXd& r, Eigen::VectorXd* z) { solver_.precondition(r, z); }, b, x,
         tolerance, max_iterations);
     *iterations = sum.iterations;

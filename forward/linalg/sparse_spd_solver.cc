@@ -60,8 +60,9 @@ Eigen::VectorXd SparseSpdSolver::solve(const Eigen::VectorXd& b) const {
 }
 
 void SparseSpdSolver::precondition(const Eigen::VectorXd& r, Eigen::VectorXd* z) const {
-  if (single_precision_ && active_ == SparseSolverKind::kCholmodSupernodal) {
-    if (!single_current_) single_current_ = single_.assign(*cholmod_->factor());
+  const cholmod_factor* L = held_cholmod_factor();
+  if (single_precision_ && L) {
+    if (!single_current_) single_current_ = single_.assign(*L);
     if (single_current_) {
       single_.solve(r, z);
       return;

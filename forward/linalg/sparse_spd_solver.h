@@ -47,6 +47,11 @@ class SparseSpdSolver {
   // z ~ A^-1 r for a preconditioner: solve(), or the single-precision solves (see above).
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
   void set_single_precision(bool on) { single_precision_ = on; }
+  // CHOLMOD's factor of the last successful factorisation, null if that was not CHOLMOD's.
+  const cholmod_factor* held_cholmod_factor() const {
+    return active_ == SparseSolverKind::kCholmodSupernodal && cholmod_ ? cholmod_->factor()
+                                                                       : nullptr;
+  }
   // The solver that produced the last successful factorisation.
   SparseSolverKind active() const { return active_; }
   int analyses() const { return analyses_; }

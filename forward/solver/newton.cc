@@ -93,18 +93,15 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     sum.factorisation_s += since(t0);
     return ok;
   };
-  // dx = -K^-1 r.
-  auto solve = [&]() {
+  // dx = -K^-1 r; approximately (the solver's cheaper solve) for a chord step.
+  auto solve = [&](bool approximate = false) {
     const auto t0 = Clock::now();
     dx = -r;
-    linear.solve_in_place(&dx);
-    sum.factorisation_s += since(t0);
-  };
-  // dx ~ -K^-1 r for a chord step, with the solver's approximate solve.
-  auto chord_solve = [&]() {
-    const auto t0 = Clock::now();
-    dx = -r;
-    linear.solve_approximately_in_place(&dx);
+    if (approximate) {
+      linear.solve_approximately_in_place(&dx);
+    } else {
+      linear.solve_in_place(&dx);
+    }
     sum.factorisation_s += since(t0);
   };
   // Whether the linear solver's factorisation fits this problem (a preconditioner for its
@@ -162,7 +159,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     if (chord) {
       chord = false;
       sum.residual_norm = relative(r.norm(), std::max(eval_scale, options.force_floor));
-      chord_solve();
+      solve(/*approximate=*/true);
       const double slope = r.dot(dx);
       bool ok =
           slope < 0.0 && dx.allFinite() && dx.norm() <= options.chord_contraction * last_update;
