@@ -1,5 +1,6 @@
 #include "linalg/sparse_spd_solver.h"
 
+#include "linalg/blas_library.h"
 #include "linalg/dynamic_teams.h"
 
 namespace vs {
@@ -8,7 +9,9 @@ SparseSpdSolver::SparseSpdSolver(SparseSolverKind preferred)
     : requested_(preferred),
       preferred_(preferred == SparseSolverKind::kAuto ? SparseSolverKind::kCholmodSupernodal
                                                       : preferred),
-      active_(preferred_) {}
+      active_(preferred_) {
+  keep_blas_on_calling_thread();
+}
 
 SparseSpdSolver::~SparseSpdSolver() = default;
 

@@ -1,5 +1,6 @@
 #include "output/run_manifest.h"
 
+#include "linalg/blas_library.h"
 #include "output/build_info.h"
 #include "output/run_summary.h"
 #include "output/scene_json.h"
@@ -16,7 +17,8 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"git_describe", program_git_describe()},
                   {"compiler", compiler_version()},
                   {"instruction_set", instruction_set()},
-                  {"eigen_version", eigen_version()}};
+                  {"eigen_version", eigen_version()},
+                  {"blas_library", blas_library()}};
   j["geometry"] = result.geometry == Geometry::kShell3d ? "shell3d" : "axisymmetric";
   j["built"] = result.built;
   j["dofs"] = result.dofs;

@@ -57,7 +57,7 @@ TEST(RunWriter, ManifestHasSceneProgramAndResults) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   for (const char* key :
-       {"version", "git_describe", "compiler", "instruction_set", "eigen_version"}) {
+       {"version", "git_describe", "compiler", "instruction_set", "eigen_version", "blas_library"}) {
     EXPECT_TRUE(j["program"][key].is_string()) << key;
   }
   EXPECT_EQ(j["termination"], "completed");
