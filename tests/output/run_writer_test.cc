@@ -56,8 +56,8 @@ TEST(RunWriter, ManifestHasSceneProgramAndResults) {
                           "punch_travel_at_peak_mm", "final_min_thickness_mm", "scene", "files"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
-  for (const char* key :
-       {"version", "git_describe", "compiler", "instruction_set", "eigen_version", "blas_library"}) {
+  for (const char* key : {"version", "git_describe", "compiler", "instruction_set", "eigen_version",
+                          "blas_library"}) {
     EXPECT_TRUE(j["program"][key].is_string()) << key;
   }
   EXPECT_EQ(j["termination"], "completed");
