@@ -3,9 +3,11 @@
 // The pattern (full symmetric storage, compressed columns) is built once from the element dof
 // lists, together with a scatter map from every element matrix entry to its slot in the value
 // array; later assemblies only write values, so the sparse Cholesky's symbolic analysis is done
-// once (numerics.md 4.2). Element evaluation runs in parallel (OpenMP) into per-element buffers;
-// the buffers are then summed in element order by a single thread, so the assembled values are
-// bitwise identical whatever the number of threads.
+// once (numerics.md 4.2). Element evaluation runs in parallel (OpenMP) into per-element buffers.
+// The matrix buffers are then summed in parallel over fixed blocks of global columns: a block adds
+// the element columns that fall in it, element by element, so every value receives its terms in
+// element order and the assembled values are bitwise identical whatever the number of threads
+// (and to a summation by one thread). Forces and potential are summed by one thread.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,6 +59,14 @@ class ShellAssembler {
   int n_ = 0;
   std::vector<std::vector<int>> edofs_;
   std::vector<std::vector<int>> scatter_;  // per element, column-major (a, b) -> value index
+  // Column blocks of K for the parallel summation: block c holds the global columns
+  // [block_begin_[c], block_begin_[c + 1]) and, in element order, the element columns that land
+  // there (element, local column b).
+  struct ElementColumn {
+    int element = 0, column = 0;
+  };
+  std::vector<int> block_begin_;
+  std::vector<std::vector<ElementColumn>> block_columns_;
   SparseMatrix K_;
   std::vector<ElementContribution> buffers_;
 };

@@ -37,6 +37,23 @@ TEST(ShellAssembler, BitwiseIdenticalForAnyThreadCount) {
   }
   // Linear element: f = K q.
   EXPECT_LT((p.assembler().matrix() * q - forces[0]).norm(), 1e-10 * forces[0].norm());
+  // The parallel summation by column blocks gives each value its element terms in element order:
+  // the same bits as adding the element matrices one after the other.
+  SparseMatrix reference = p.assembler().matrix();
+  reference.coeffs().setZero();
+  const ElementKernel kernel = p.kernel(Shell9Stiffness::kSecant);
+  for (int e = 0; e < model.num_elements(); ++e) {
+    ElementContribution c;
+    kernel(e, p.assembler().gather(e, q), &c);
+    const std::vector<int> d = model.element_dofs(e);
+    for (std::size_t b = 0; b < d.size(); ++b)
+      for (std::size_t a = 0; a < d.size(); ++a)
+        reference.coeffRef(d[a], d[b]) +=
+            c.stiffness(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
+  }
+  ASSERT_EQ(reference.nonZeros(), static_cast<Eigen::Index>(values[0].size()));
+  EXPECT_EQ(0,
+            std::memcmp(values[0].data(), reference.valuePtr(), values[0].size() * sizeof(double)));
 }
 
 TEST(SparseSpdSolver, CholmodAndLdltAgreeAndReuseTheAnalysis) {
