@@ -100,12 +100,17 @@ double ShellAssembler::assemble(const ElementKernel& kernel, const Eigen::Vector
 
 void ShellAssembler::apply_constraints(const std::vector<char>& fixed,
                                        const std::vector<double>& value, Eigen::VectorXd* rhs) {
+  // The known columns to the right-hand side, by one thread (the rows of different columns
+  // coincide); a zero value moves nothing.
   for (int j = 0; j < n_; ++j) {
+    if (!fixed[j] || value[j] == 0.0) continue;
     for (SparseMatrix::InnerIterator it(K_, j); it; ++it) {
       const auto i = static_cast<int>(it.row());
-      if (fixed[j] && !fixed[i]) (*rhs)(i) -= it.value() * value[j];
+      if (!fixed[i]) (*rhs)(i) -= it.value() * value[j];
     }
   }
+  // Rows and columns of the fixed dofs: every column writes only its own values and rhs(j).
+#pragma omp parallel for schedule(static)
   for (int j = 0; j < n_; ++j) {
     for (SparseMatrix::InnerIterator it(K_, j); it; ++it) {
       const auto i = static_cast<int>(it.row());
