@@ -590,6 +590,16 @@ std::vector<double> FormingModel::area_stretch(const std::vector<Vec3>& x) const
   return sum;
 }
 
+Shell9State FormingModel::element_state(int e) const {
+  const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
+  Shell9State st;
+  st.sigma_y = sigma_y_.data() + fp;
+  st.hardening_viscosity = hardening_viscosity_.data() + fp;
+  st.face_pressure = element_face_pressure(e);
+  if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
+  return st;
+}
+
 void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen::VectorXd& qe,
                                   Shell9Stiffness kind, double theta, ElementContribution* c) {
   // Element dofs are 5 per node with the velocities in the nodal frames Q_a: the element takes
@@ -597,11 +607,7 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   // T = diag(Q_a, I2), come out in the nodal frames directly.
   const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
   const Shell9Material mat = material(e);
-  Shell9State st;
-  st.sigma_y = sigma_y_.data() + fp;
-  st.hardening_viscosity = hardening_viscosity_.data() + fp;
-  st.face_pressure = element_face_pressure(e);
-  if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
+  Shell9State st = element_state(e);
   if (kind == Shell9Stiffness::kTangent) {
     st.dual_record = dual_[2].points.data() + fp;
     if (dual_mode_ == DualMode::kAnchor) st.dual_anchor = dual_[0].points.data() + fp;
@@ -853,14 +859,8 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
 #pragma omp parallel for schedule(dynamic, 4)
   for (int e = 0; e < ne; ++e) {
     const Eigen::VectorXd q = assembler_->gather(e, x);
-    const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
     const Shell9Material mat = material(e);
-    Shell9State st;
-    st.sigma_y = sigma_y_.data() + fp;
-    st.hardening_viscosity = hardening_viscosity_.data() + fp;
-    st.face_pressure = element_face_pressure(e);
-    if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
-    if (!flow_guess_.empty()) st.flow_guess = flow_guess_.data() + fp;
+    const Shell9State st = element_state(e);
     Shell9Output out;
     shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
                     &out);

@@ -351,6 +351,9 @@ class FormingModel {
   // Face pressures at the in-plane points of element e from the nodal ones; null if none of its
   // nodes is pressed. The buffer is per thread.
   const FacePressure* element_face_pressure(int e) const;
+  // Element e's frozen point data (yield stresses, hardening viscosities, face pressures, flow
+  // guesses) for shell9_evaluate.
+  Shell9State element_state(int e) const;
   // The friction terms of the last evaluate() (refresh_friction), per node in contact.
   struct FrictionTerm {
     int dof = 0;  // first tangential dof
