@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libeigen3-dev libceres-dev libnlopt-cxx-dev libsuitesparse-dev
-  libopenblas0-serial
+  libopenblas0-serial libblas-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev
 )
