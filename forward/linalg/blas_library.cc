@@ -8,8 +8,9 @@
 
 namespace vs {
 
-std::string blas_library() {
-  void* symbol = dlsym(RTLD_DEFAULT, "dgemm_");
+std::string blas_library() { return library_of(dlsym(RTLD_DEFAULT, "dgemm_")); }
+
+std::string library_of(const void* symbol) {
   Dl_info info{};
   if (symbol == nullptr || dladdr(symbol, &info) == 0 || info.dli_fname == nullptr)
     return "unknown";

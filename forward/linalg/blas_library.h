@@ -11,6 +11,9 @@ namespace vs {
 // "unknown". Two runs agree to the last bit only with the same BLAS; run.json records it.
 std::string blas_library();
 
+// The file of the loaded library that holds `symbol`, symbolic links resolved, or "unknown".
+std::string library_of(const void* symbol);
+
 // Makes a multithreaded OpenBLAS (Debian's libopenblas0-pthread or -openmp) run every call on the
 // calling thread; no effect on any other BLAS, and idempotent. The solver's own OpenMP teams
 // already use the cores, and:

@@ -6,28 +6,19 @@
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <memory>
 #include <string>
 
 namespace vs {
 namespace {
 
-// The resolved file of the library loaded as libblas.so.3, or "" if it is not loaded.
+// The resolved file of the library loaded as libblas.so.3 (its dgemm_), or "" if it is not loaded.
 std::string loaded_libblas() {
   void* handle = dlopen("libblas.so.3", RTLD_LAZY | RTLD_NOLOAD);
   if (handle == nullptr) return "";
-  void* symbol = dlsym(handle, "dgemm_");
-  Dl_info info{};
-  std::string file;
-  if (symbol != nullptr && dladdr(symbol, &info) != 0 && info.dli_fname != nullptr) {
-    const std::unique_ptr<char, decltype(&std::free)> resolved(realpath(info.dli_fname, nullptr),
-                                                               &std::free);
-    if (resolved) file = resolved.get();
-  }
+  const std::string file = library_of(dlsym(handle, "dgemm_"));
   dlclose(handle);
-  return file;
+  return file == "unknown" ? "" : file;
 }
 
 TEST(BlasLibrary, IsTheSystemLibblasLoadedFirst) {
