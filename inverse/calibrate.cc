@@ -417,7 +417,12 @@ std::string CalibrationResult::brief_report() const {
                           f.values.empty() ? f.message
                                            : fmt::format("{} ({} forward runs, {})", values,
                                                          f.forward_runs, f.termination));
+      for (const auto& w : f.forward_warnings)
+        text += fmt::format("      its forward model warns: {}\n", w);
     }
+  }
+  for (const auto& w : forward_warnings) {
+    text += fmt::format("  warning: at the identified parameters the forward model warns: {}\n", w);
   }
   for (const auto& b : bound_effects) text += fmt::format("  {}\n", b.text);
   for (const auto& w : data_weighting) {
@@ -554,6 +559,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
 
   const auto final_point = objective.evaluate(x);
   result.final_cost = final_point->cost;
+  for (std::size_t k = 0; k < final_point->runs.size(); ++k) {
+    for (const std::string& w : final_point->runs[k].warnings) {
+      const std::string text = final_point->runs.size() > 1 && k < result.scene_sources.size()
+                                   ? fmt::format("{}: {}", result.scene_sources[k], w)
+                                   : w;
+      if (std::find(result.forward_warnings.begin(), result.forward_warnings.end(), text) ==
+          result.forward_warnings.end())
+        result.forward_warnings.push_back(text);
+    }
+  }
   if (final_point->ok) {
     result.fits = make_fits(cache.pipeline(), *final_point, config, resolution);
     if (result.termination == CalibrationTermination::kNotConverged) {
@@ -609,6 +624,7 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       fit.message = alternative.message;
       fit.final_cost = alternative.final_cost;
       fit.forward_runs = alternative.forward_runs;
+      fit.forward_warnings = alternative.forward_warnings;
       result.model_form_forward_runs += alternative.forward_runs;
       if (alternative.termination != CalibrationTermination::kFailed) {
         const Eigen::VectorXd v = alternative.free_values();

@@ -74,6 +74,7 @@ struct ModelFormFit {
   std::vector<double> values;  // free parameters, free order (empty if it failed)
   double final_cost = 0.0;
   int forward_runs = 0;
+  std::vector<std::string> forward_warnings;  // its CalibrationResult::forward_warnings
 };
 
 // Per free parameter: the smallest and largest identified value over the main fit and every
@@ -121,6 +122,10 @@ struct CalibrationResult {
   bool global_search_used = false;
   GlobalSearchSummary global;  // when used
   std::vector<DataSetFit> fits;
+  // The forward model's trust caveats (RunResult::warnings) at the identified parameters, e.g.
+  // elements shorter than the thickness; "<scene>: " in front with several scenes. A fit is only
+  // as good as the runs it matches, so the report repeats them.
+  std::vector<std::string> forward_warnings;
   bool uncertainty_available = false;
   UncertaintySummary uncertainty;   // free parameters only, in free order
   std::string uncertainty_message;  // why not available

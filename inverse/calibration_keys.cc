@@ -460,8 +460,10 @@ std::string calibration_reference_markdown() {
       "`calibration.json` (identified values, standard errors, intervals, correlations, "
       "statements, termination and whether the fit stopped at the noise floor, parameters at "
       "a bound with the bound's effect, the lack-of-fit diagnostic per data set, the "
-      "model-form fits and ranges; non-finite numbers are left out rather than written as "
-      "null), "
+      "model-form fits and ranges, the forward model's warnings at the identified "
+      "parameters and in each model-form fit (`forward_warnings`: e.g. elements shorter than "
+      "the thickness; the printed report repeats them); non-finite numbers are left out "
+      "rather than written as null), "
       "`evaluations.csv` (every forward evaluation; a failed one has status `failed`, an "
       "empty cost and the reason), `fit_<name>.csv` and `.svg` (measured against simulated at "
       "the optimum) and `cost.svg`.\n";

@@ -300,10 +300,12 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
                             {"forward_runs", f.forward_runs}};
       put_finite(entry, "final_cost", f.final_cost);
       if (!f.values.empty()) entry["values"] = f.values;
+      entry["forward_warnings"] = f.forward_warnings;
       forms.push_back(entry);
     }
     j["model_form"] = {{"fits", forms}, {"forward_runs", result.model_form_forward_runs}};
   }
+  j["forward_warnings"] = result.forward_warnings;
   j["notes"] = result.report_notes;
   return j.dump(2) + "\n";
 }

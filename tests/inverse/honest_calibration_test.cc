@@ -400,6 +400,65 @@ TEST(ModelForm, RangeOverTheAlternatives) {
   EXPECT_NE(json.find("\"model_form_lower\""), std::string::npos);
 }
 
+// StretchingFake that warns, as the solver does, when its elements are shorter than the
+// thickness (blank.elements beyond radius / thickness).
+struct WarningStretchingFake {
+  RunResult operator()(const Scene& scene) const {
+    RunResult run = StretchingFake{}(scene);
+    if (scene.blank.radius_mm / scene.blank.elements < scene.blank.thickness_mm)
+      run.warnings.push_back("fake: elements shorter than the thickness");
+    run.warnings.push_back("fake: always");
+    run.warnings.push_back("fake: always");  // repeated: reported once
+    return run;
+  }
+};
+
+// The forward model's warnings at the identified parameters reach the result, the printed report
+// and calibration.json, each once; a model-form fit carries its own (here only the fine mesh's
+// runs warn about the element length).
+TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachModelForm) {
+  const fs::path dir = scratch_dir();
+  const fs::path scene_file = write_scene(dir);
+  Scene scene = load_scene(scene_file.string());
+  scene.process.output_travels_mm = {25.0};
+  scene.blank.elements = 40;
+  const RunResult run = StretchingFake{}(scene);
+  std::vector<double> radii;
+  for (int i = 0; i <= 20; ++i) radii.push_back(2.0 * i);
+  const auto data = make_synthetic_measurements(
+      scene, run, {{MeasurementKind::kThicknessStrain, "thick_25", 25.0, radii, 0.0, 0.0}}, 1);
+  CalibrationConfig config;
+  config.scenes = {{"scene", scene_file.string(), "test"}};
+  config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1)};
+  config.data = {data_set(data[0], 0.002)};
+  config.forward.overrides = {{"blank.elements", "40"}};
+  config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test"}};
+  const auto result = calibrate(config, quiet(), WarningStretchingFake{});
+  ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
+  EXPECT_EQ(result.forward_warnings, std::vector<std::string>{"fake: always"});
+  ASSERT_EQ(result.model_form.size(), 1u);
+  EXPECT_EQ(
+      result.model_form[0].forward_warnings,
+      (std::vector<std::string>{"fake: elements shorter than the thickness", "fake: always"}));
+  const std::string brief = result.brief_report();
+  EXPECT_NE(brief.find("at the identified parameters the forward model warns: fake: always"),
+            std::string::npos)
+      << brief;
+  EXPECT_NE(brief.find("its forward model warns: fake: elements shorter than the thickness"),
+            std::string::npos)
+      << brief;
+  const std::string json = calibration_json(result, config);
+  EXPECT_NE(json.find("\"forward_warnings\": [\n    \"fake: always\"\n  ]"), std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"fake: elements shorter than the thickness\""), std::string::npos);
+
+  // Without warnings in the forward runs: none in the report.
+  config.model_forms.clear();
+  const auto quiet_result = calibrate(config, quiet(), StretchingFake{});
+  EXPECT_TRUE(quiet_result.forward_warnings.empty());
+  EXPECT_EQ(quiet_result.brief_report().find("warns"), std::string::npos);
+}
+
 TEST(ModelForm, BadSceneEditIsAnInputErrorBeforeAnyRun) {
   const fs::path dir = scratch_dir();
   CalibrationConfig config = linear_config(dir, linear_data(480.0, 0.15, 0.0, 20.0, 7), 20.0);
