@@ -144,14 +144,18 @@ int check_command(const SceneArgs& args) {
     std::cout << "ok\n"
               << fmt::format(
                      "{}: \"{}\": 3D shell, {} blank {} mm, thickness {} mm, {} model, {} "
-                     "divisions; tools: {}; punch travel {} mm\n",
+                     "divisions{}; tools: {}; punch travel {} mm\n",
                      scene.source, scene.title,
                      scene.blank.shape == vs::BlankShape::kCircle ? "circular, radius"
                                                                   : "square, half side",
                      scene.blank.radius_mm, scene.blank.thickness_mm,
                      scene.blank.symmetry == vs::BlankSymmetry::kFull ? "full" : "quarter",
-                     scene.blank.divisions, tools.empty() ? "none" : tools,
-                     scene.process.punch_travel_mm);
+                     scene.blank.divisions,
+                     scene.blank.shape == vs::BlankShape::kCircle &&
+                             scene.blank.ring_divisions() != scene.blank.divisions
+                         ? fmt::format(" ({} across the ring)", scene.blank.ring_divisions())
+                         : std::string(),
+                     tools.empty() ? "none" : tools, scene.process.punch_travel_mm);
     return kExitOk;
   }
   std::cout << "ok\n"

@@ -14,7 +14,7 @@ ShellMesh quarter_blank(const BlankSpec& b) {
   const double R = b.radius_mm, tol = 1e-9 * R;
   const int n = b.divisions;
   if (b.shape == BlankShape::kCircle) {
-    ShellMesh mesh = quarter_disc(R, n, n, b.thickness_mm);
+    ShellMesh mesh = quarter_disc(R, n, b.ring_divisions(), b.thickness_mm);
     mesh.node_sets["edge"] = mesh.set("rim");
     return mesh;
   }
@@ -42,8 +42,9 @@ void split_line(ShellMesh* mesh, const std::string& name, int axis, double tol) 
 ShellMesh full_blank(const BlankSpec& b) {
   const double R = b.radius_mm;
   const int n = b.divisions;
-  ShellMesh mesh = b.shape == BlankShape::kCircle ? full_disc(R, 2 * n, n, b.thickness_mm)
-                                                  : full_square(R, 2 * n, b.thickness_mm);
+  ShellMesh mesh = b.shape == BlankShape::kCircle
+                       ? full_disc(R, 2 * n, b.ring_divisions(), b.thickness_mm)
+                       : full_square(R, 2 * n, b.thickness_mm);
   const double tol = 1e-9 * R;
   split_line(&mesh, "y0", 0, tol);
   split_line(&mesh, "x0", 1, tol);

@@ -27,6 +27,12 @@ const char* name(EdgeCondition e) {
   return "unknown";
 }
 
+const char* name(BlankShape shape) { return shape == BlankShape::kCircle ? "circle" : "square"; }
+
+const char* name(BlankSymmetry symmetry) {
+  return symmetry == BlankSymmetry::kQuarter ? "quarter" : "full";
+}
+
 const char* name(HardeningLaw law) {
   switch (law) {
     case HardeningLaw::kSwift:
@@ -174,6 +180,12 @@ nlohmann::ordered_json scene_to_json(const Scene& s) {
                 {"elements", b.elements},
                 {"grading", b.grading},
                 {"edge", name(b.edge)}};
+  if (s.geometry == Geometry::kShell3d) {
+    j["blank"]["shape"] = name(b.shape);
+    j["blank"]["symmetry"] = name(b.symmetry);
+    j["blank"]["divisions"] = b.divisions;
+    if (b.shape == BlankShape::kCircle) j["blank"]["radial_divisions"] = b.ring_divisions();
+  }
 
   const HardeningSpec& h = s.material.hardening;
   const RateSpec& r = s.material.rate;

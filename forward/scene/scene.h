@@ -43,6 +43,10 @@ struct BlankSpec {
   BlankShape shape = BlankShape::kCircle;
   BlankSymmetry symmetry = BlankSymmetry::kQuarter;
   int divisions = 8;  // 9-node elements along each edge of each structured block
+  // Circle: 9-node elements across the ring from the central square to the rim (the curved
+  // blocks' radial count); 0 (not set): divisions. Read it through ring_divisions().
+  int radial_divisions = 0;
+  int ring_divisions() const { return radial_divisions > 0 ? radial_divisions : divisions; }
 };
 
 enum class HardeningLaw {

@@ -109,6 +109,13 @@ void check_blank(const Scene& scene, const ToolRoles& roles, const SceneSourceMa
     where.fail("blank.edge",
                "blank.edge = \"free\" needs a die: without one nothing holds the sheet");
   }
+  if (scene.geometry == Geometry::kShell3d && blank.shape != BlankShape::kCircle &&
+      blank.ring_divisions() != blank.divisions) {
+    where.fail("blank.radial_divisions",
+               fmt::format("blank.radial_divisions = {} applies to a circular blank (the ring "
+                           "around its central square); a square blank has divisions only",
+                           blank.radial_divisions));
+  }
   if (!(blank.thickness_mm < blank.radius_mm / 5.0)) {
     where.fail("blank.thickness_mm",
                fmt::format("blank.thickness_mm = {} must be < blank.radius_mm / 5 = {} mm (thin "
@@ -150,13 +157,16 @@ void check_process(const Scene& scene, const SceneSourceMap& where) {
   }
 }
 
-// Shortest initial element length (axisymmetric: geometric grading, last/first = grading) or a
-// lower estimate of the 9-node element size sqrt(area) (shell3d: the quarter circle's blocks
-// are about radius / (2 divisions) across, the quarter square's radius / divisions).
+// Shortest initial element length (axisymmetric: geometric grading, last/first = grading) or an
+// estimate of the 9-node element size sqrt(area) (shell3d: the quarter circle's blocks are
+// about radius / (2 divisions) across, its ring radius / (2 radial_divisions) radially; the
+// quarter square's radius / divisions).
 double shortest_element_mm(const Scene& scene) {
   const BlankSpec& b = scene.blank;
   if (scene.geometry == Geometry::kShell3d) {
-    return b.radius_mm / (b.shape == BlankShape::kCircle ? 2.0 * b.divisions : b.divisions);
+    if (b.shape != BlankShape::kCircle) return b.radius_mm / b.divisions;
+    const double n = b.divisions, m = std::max(b.divisions, b.ring_divisions());
+    return b.radius_mm / (2.0 * std::sqrt(n * m));
   }
   const int n = b.elements;
   if (b.grading == 1.0 || n < 2) return b.radius_mm / n;
@@ -168,7 +178,8 @@ double shortest_element_mm(const Scene& scene) {
 int element_count(const Scene& scene) {
   const BlankSpec& b = scene.blank;
   if (scene.geometry == Geometry::kAxisymmetric) return b.elements;
-  const int quarter = (b.shape == BlankShape::kCircle ? 3 : 1) * b.divisions * b.divisions;
+  const int n = b.divisions;
+  const int quarter = b.shape == BlankShape::kCircle ? n * n + 2 * n * b.ring_divisions() : n * n;
   return b.symmetry == BlankSymmetry::kFull ? 4 * quarter : quarter;
 }
 
@@ -250,8 +261,9 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "`punch_travel_mm` / that cap steps; at most 1e6 steps, and at most 1e8 element-steps "
       "(steps x elements; axisymmetric: about 10 us and, with `output.history`, 150 bytes each) "
       "or 5e6 element-steps for `shell3d` (about 2 ms each on 2 cores). The 3D element size is "
-      "estimated as `radius_mm` / (2 `divisions`) for circles and `radius_mm` / `divisions` for "
-      "squares.",
+      "estimated as `radius_mm` / (2 sqrt(`divisions` x max(`divisions`, `radial_divisions`))) "
+      "for circles and `radius_mm` / `divisions` for squares.",
+      "`radial_divisions` other than `divisions` needs a circular blank.",
       "Keys marked 'axisymmetric only' / 'shell3d only' are rejected in scenes of the other "
       "`geometry`.",
   };

@@ -160,6 +160,18 @@ std::vector<KeySpec> build_keys() {
            "3D step costs about 2 ms per element on 2 cores (ex4a to 5 mm: 39 s at 8, 4 min at "
            "16); the run-size rule bounds divisions x travel."))
       .geometry = "shell3d";
+  {
+    KeySpec& k = add(make(
+        "blank", "radial_divisions", kInt, int_field<&blank, &BlankSpec::radial_divisions>(), "",
+        closed(1, 128),
+        "Circular blank (shell3d only): 9-node elements across the ring from the central "
+        "square to the rim, m; the quarter circle then has n^2 + 2 n m elements. More than "
+        "divisions refines the outer ring (the flange, the die shoulder, the wall) without the "
+        "centre: on a deep-drawn cup the ring's nodes run over the die shoulder one by one, and "
+        "too few of them make the contact chatter (experiments/10_earing). Default: divisions."));
+    k.geometry = "shell3d";
+    k.default_text = [] { return std::string("(= divisions)"); };
+  }
 
   // [material]
   add(make("material", "r_value", kFloat, float_field<&material, &MaterialSpec::r_value>(), "",

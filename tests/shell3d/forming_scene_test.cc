@@ -1,6 +1,7 @@
 // Scene integration of the 3D forming solver: geometry-specific keys, bundled scenes, dispatch.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -161,6 +162,44 @@ TEST(FormingScene, MeshesHaveTheSymmetryAndEdgeSets) {
   EXPECT_EQ(square.num_elements(), 9);
   EXPECT_EQ(square.set("edge").size(), 13u);  // two edges of 7 nodes sharing the corner
   EXPECT_EQ(square.set("diagonal").size(), 7u);
+}
+
+// blank.radial_divisions m refines the ring of a circular blank: n^2 + 2 n m elements per
+// quarter, 2 (n + m) elements along each symmetry line, the rim unchanged (2 n elements); the
+// ring's radial node spacing on x = 0 is (r - r/2) / (2 m). The full blank is four quarters.
+// Not set, it is divisions (the meshes of before); on a square blank, or out of range, an error.
+TEST(FormingScene, RadialDivisionsRefineTheRingOfACircle) {
+  const std::string head = "geometry = \"shell3d\"\n" + std::string(kTools) +
+                           "[blank]\nradius_mm = 50.0\ndivisions = 3\n";
+  const Scene plain = load_scene(write_scene("plain.toml", head));
+  EXPECT_EQ(plain.blank.ring_divisions(), 3);
+  EXPECT_EQ(forming_mesh(plain).num_elements(), 27);
+  Scene s = load_scene(write_scene("ring.toml", head + "radial_divisions = 7\n"));
+  EXPECT_EQ(s.blank.ring_divisions(), 7);
+  const ShellMesh disc = forming_mesh(s);
+  EXPECT_EQ(disc.num_elements(), 3 * 3 + 2 * 3 * 7);
+  EXPECT_EQ(disc.set("x0").size(), 2u * (3 + 7) + 1u);
+  EXPECT_EQ(disc.set("rim").size(), 2u * (2 * 3) + 1u);
+  std::vector<double> y;
+  for (int i : disc.set("x0")) y.push_back(disc.nodes[i].y());
+  std::sort(y.begin(), y.end());
+  for (std::size_t k = y.size() - 2 * 7; k + 1 < y.size(); ++k)
+    EXPECT_NEAR(y[k + 1] - y[k], 25.0 / 14.0, 1e-9) << k;
+  EXPECT_NEAR(y.back(), 50.0, 1e-12);
+  s.blank.symmetry = BlankSymmetry::kFull;
+  EXPECT_EQ(forming_mesh(s).num_elements(), 4 * (3 * 3 + 2 * 3 * 7));
+  const std::string square =
+      load_error("square.toml", head + "shape = \"square\"\nradial_divisions = 7\n");
+  EXPECT_NE(square.find("blank.radial_divisions = 7 applies to a circular blank"),
+            std::string::npos)
+      << square;
+  EXPECT_NE(load_error("zero.toml", head + "radial_divisions = 0\n").find("radial_divisions"),
+            std::string::npos);
+  const std::string axi =
+      load_error("axi_ring.toml", "[blank]\nradial_divisions = 4\n" + std::string(kTools));
+  EXPECT_NE(axi.find("key 'blank.radial_divisions' is only used by geometry = \"shell3d\""),
+            std::string::npos)
+      << axi;
 }
 
 }  // namespace
