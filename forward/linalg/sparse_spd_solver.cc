@@ -23,6 +23,7 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
   }
   if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
     cholmod_ = std::make_unique<Cholmod>();
+    cholmod_->cholmod().print = 0;  // a refusal is handled (the fallback) and counted, not printed
     const DynamicTeams teams;
     cholmod_->analyzePattern(A);
   } else {
@@ -43,6 +44,7 @@ bool SparseSpdSolver::factorize(const SparseMatrix& A) {
       active_ = SparseSolverKind::kCholmodSupernodal;
       return true;
     }
+    ++fallbacks_;
   }
   if (!ldlt_analyzed_) {
     ldlt_ = std::make_unique<Ldlt>();

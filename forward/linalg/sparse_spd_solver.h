@@ -10,6 +10,8 @@
 // with CHOLMOD's OpenMP teams capped (linalg/dynamic_teams.h; uncapped they cost it 3-4x at these
 // sizes): 1 085 dofs LDLT 1.9 ms, CHOLMOD supernodal 1.4 ms; 4 085 dofs 15.7 / 9.0 ms; 15 845
 // dofs 154 / 68 ms.
+// CHOLMOD's own messages are off (its "matrix not positive definite" warning printed a line per
+// refused factorisation: 4 789 lines in one 3D cup run); fallbacks() counts the refusals instead.
 // precondition() applies the inverse of the held factorisation as a preconditioner: with a CHOLMOD
 // factor and single_precision set (the default), through a single-precision copy of the factor
 // (linalg/supernodal_factor.h), made at the first call after each factorisation.
@@ -55,6 +57,8 @@ class SparseSpdSolver {
   // The solver that produced the last successful factorisation.
   SparseSolverKind active() const { return active_; }
   int analyses() const { return analyses_; }
+  // Factorisations CHOLMOD refused (not positive definite) that the fallback then did.
+  int fallbacks() const { return fallbacks_; }
 
  private:
   // Eigen's CHOLMOD wrapper with its factor (a protected member) readable.
@@ -68,6 +72,7 @@ class SparseSpdSolver {
   std::unique_ptr<Ldlt> ldlt_;
   bool ldlt_analyzed_ = false;
   int analyses_ = 0;
+  int fallbacks_ = 0;
   bool single_precision_ = true;
   mutable SinglePrecisionFactor single_;
   mutable bool single_current_ = false;  // single_ copies the last CHOLMOD factorisation

@@ -35,7 +35,8 @@ nlohmann::ordered_json run_manifest(const Scene& scene, const RunResult& result,
                   {"contact_s", result.timings.contact_s},
                   {"factorisations", result.timings.factorisations},
                   {"krylov_steps", result.timings.krylov_steps},
-                  {"krylov_iterations", result.timings.krylov_iterations}};
+                  {"krylov_iterations", result.timings.krylov_iterations},
+                  {"factorisation_fallbacks", result.timings.factorisation_fallbacks}};
   // NaN (no step at all) becomes null in JSON.
   j["final_punch_travel_mm"] = s.final_punch_travel_mm;
   j["peak_punch_force_N"] = s.peak_punch_force_N;

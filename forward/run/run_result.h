@@ -75,6 +75,8 @@ struct RunTimings {
   int factorisations = 0;       // numeric factorisations (3D)
   int krylov_steps = 0;         // Newton steps solved by preconditioned CG (solver/newton.h)
   int krylov_iterations = 0;    // their CG iterations (and those of failed attempts)
+  // Factorisations CHOLMOD refused as not positive definite, done by the LDL^T fallback (3D).
+  int factorisation_fallbacks = 0;
 };
 
 // The 3D sheet at one instant (nodal fields of the meshed part).

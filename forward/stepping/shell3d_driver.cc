@@ -580,6 +580,7 @@ void Shell3dStepper::finish(RunResult* result) const {
   result->timings.factorisations = factorisations_;
   result->timings.krylov_steps = krylov_steps_;
   result->timings.krylov_iterations = krylov_iterations_;
+  result->timings.factorisation_fallbacks = linear_.solver().fallbacks();
   result->timings.contact_s += contact_s_;
   const double h0 = scene_.blank.thickness_mm;
   // As the axisymmetric profiles: one set per output travel reached, then the final state (which

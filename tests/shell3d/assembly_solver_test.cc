@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <cstring>
+#include <string>
 
 #include "benchmark_setups.h"
 
@@ -82,10 +83,24 @@ TEST(SparseSpdSolver, FallsBackToLdltWhenCholmodFails) {
   A.setFromTriplets(t.begin(), t.end());
   SparseSpdSolver s(SparseSolverKind::kCholmodSupernodal);
   s.analyze(A);
-  ASSERT_TRUE(s.factorize(A));
+  EXPECT_EQ(s.fallbacks(), 0);
+  // The refusal is counted, not printed (CHOLMOD's warning once filled a run's log).
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const bool factorised = s.factorize(A);
+  const std::string out = ::testing::internal::GetCapturedStdout();
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(factorised);
+  EXPECT_EQ(out + err, "");
+  EXPECT_EQ(s.fallbacks(), 1);
   EXPECT_EQ(s.active(), SparseSolverKind::kSimplicialLDLT);
   const Eigen::VectorXd b = Eigen::Vector3d(1.0, 2.0, 3.0);
   EXPECT_LT((A * s.solve(b) - b).norm(), 1e-12);
+  // A positive definite matrix afterwards: CHOLMOD again, the count unchanged.
+  A.coeffRef(1, 1) = 1.0;
+  ASSERT_TRUE(s.factorize(A));
+  EXPECT_EQ(s.active(), SparseSolverKind::kCholmodSupernodal);
+  EXPECT_EQ(s.fallbacks(), 1);
 }
 
 // Folded plate: two unit squares meeting at 90 degrees along x = 1 (a kink line), clamped at
