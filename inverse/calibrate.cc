@@ -167,6 +167,22 @@ bool sigma_stated(const DataSpec& d) {
   return d.sigma > 0.0 || d.weight > 0.0 || !d.measurement.point_sigma.empty();
 }
 
+// The trust caveats of an evaluation's forward runs (RunResult::warnings), each once, with
+// "<scene>: " in front when there are several scenes.
+std::vector<std::string> forward_warnings(const Evaluation& e,
+                                          const std::vector<std::string>& scene_sources) {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < e.runs.size(); ++k) {
+    for (const std::string& w : e.runs[k].warnings) {
+      const std::string text = e.runs.size() > 1 && k < scene_sources.size()
+                                   ? fmt::format("{}: {}", scene_sources[k], w)
+                                   : w;
+      if (std::find(out.begin(), out.end(), text) == out.end()) out.push_back(text);
+    }
+  }
+  return out;
+}
+
 // `resolution`: per data set, the forward resolution of its simulated values in data units
 // (forward_resolution()); `config` data sets in the pipeline's order.
 std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evaluation& e,
@@ -505,6 +521,10 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   const Eigen::VectorXd x0 = objective.initial();
   const auto first = objective.evaluate(x0);
   result.initial_cost = first->cost;
+  // Said at once: a long fit on a model that warns (a mesh finer than the thickness, ...) can be
+  // stopped before it has run for hours.
+  for (const std::string& w : forward_warnings(*first, result.scene_sources))
+    say("warning: at the initial parameters the forward model warns: " + w);
   if (!first->ok) {
     // Nothing to fit from: stop now, with the forward run's own reason.
     result.termination = CalibrationTermination::kFailed;
@@ -559,16 +579,7 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
 
   const auto final_point = objective.evaluate(x);
   result.final_cost = final_point->cost;
-  for (std::size_t k = 0; k < final_point->runs.size(); ++k) {
-    for (const std::string& w : final_point->runs[k].warnings) {
-      const std::string text = final_point->runs.size() > 1 && k < result.scene_sources.size()
-                                   ? fmt::format("{}: {}", result.scene_sources[k], w)
-                                   : w;
-      if (std::find(result.forward_warnings.begin(), result.forward_warnings.end(), text) ==
-          result.forward_warnings.end())
-        result.forward_warnings.push_back(text);
-    }
-  }
+  result.forward_warnings = forward_warnings(*final_point, result.scene_sources);
   if (final_point->ok) {
     result.fits = make_fits(cache.pipeline(), *final_point, config, resolution);
     if (result.termination == CalibrationTermination::kNotConverged) {

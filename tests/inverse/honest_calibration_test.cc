@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -413,9 +414,9 @@ struct WarningStretchingFake {
   }
 };
 
-// The forward model's warnings at the identified parameters reach the result, the printed report
-// and calibration.json, each once; a model-form fit carries its own (here only the fine mesh's
-// runs warn about the element length).
+// The forward model's warnings at the initial parameters are said at once (progress), those at
+// the identified parameters reach the result, the printed report and calibration.json, each once; a
+// model-form fit carries its own (here only the fine mesh's runs warn about the element length).
 TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachModelForm) {
   const fs::path dir = scratch_dir();
   const fs::path scene_file = write_scene(dir);
@@ -433,7 +434,14 @@ TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachMode
   config.data = {data_set(data[0], 0.002)};
   config.forward.overrides = {{"blank.elements", "40"}};
   config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test"}};
-  const auto result = calibrate(config, quiet(), WarningStretchingFake{});
+  std::vector<std::string> lines;
+  CalibrationOptions options = quiet();
+  options.progress = [&lines](const std::string& line) { lines.push_back(line); };
+  const auto result = calibrate(config, options, WarningStretchingFake{});
+  // Said before the fit starts (the second line, after the problem's size), once per warning.
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_EQ(lines[1], "warning: at the initial parameters the forward model warns: fake: always");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), lines[1]), 1);
   ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
   EXPECT_EQ(result.forward_warnings, std::vector<std::string>{"fake: always"});
   ASSERT_EQ(result.model_form.size(), 1u);
