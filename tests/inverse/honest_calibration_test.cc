@@ -364,9 +364,9 @@ TEST(AtBound, InteriorOptimumIsNotHeld) {
   EXPECT_TRUE(result.bound_effects.empty());
 }
 
-// The fake's profiles are sampled at element midpoints, so the mesh is a model choice that moves
-// the identified friction a little: the range must contain the main fit and the alternative.
-TEST(ModelForm, RangeOverTheAlternatives) {
+// Friction from StretchingFake's noise-free thickness profile at 25 mm (40 elements, truth 0.1),
+// starting at 0.08; the scene and data in this test's scratch folder.
+CalibrationConfig friction_from_thickness_config() {
   const fs::path dir = scratch_dir();
   const fs::path scene_file = write_scene(dir);
   Scene scene = load_scene(scene_file.string());
@@ -382,6 +382,13 @@ TEST(ModelForm, RangeOverTheAlternatives) {
   config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1)};
   config.data = {data_set(data[0], 0.002)};
   config.forward.overrides = {{"blank.elements", "40"}};
+  return config;
+}
+
+// The fake's profiles are sampled at element midpoints, so the mesh is a model choice that moves
+// the identified friction a little: the range must contain the main fit and the alternative.
+TEST(ModelForm, RangeOverTheAlternatives) {
+  CalibrationConfig config = friction_from_thickness_config();
   config.model_forms = {{"coarse mesh", {{"blank.elements", "8"}}, "test"},
                         {"same mesh", {{"blank.elements", "40"}}, "test"}};
   const auto result = calibrate(config, quiet(), StretchingFake{});
@@ -418,21 +425,7 @@ struct WarningStretchingFake {
 // the identified parameters reach the result, the printed report and calibration.json, each once; a
 // model-form fit carries its own (here only the fine mesh's runs warn about the element length).
 TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachModelForm) {
-  const fs::path dir = scratch_dir();
-  const fs::path scene_file = write_scene(dir);
-  Scene scene = load_scene(scene_file.string());
-  scene.process.output_travels_mm = {25.0};
-  scene.blank.elements = 40;
-  const RunResult run = StretchingFake{}(scene);
-  std::vector<double> radii;
-  for (int i = 0; i <= 20; ++i) radii.push_back(2.0 * i);
-  const auto data = make_synthetic_measurements(
-      scene, run, {{MeasurementKind::kThicknessStrain, "thick_25", 25.0, radii, 0.0, 0.0}}, 1);
-  CalibrationConfig config;
-  config.scenes = {{"scene", scene_file.string(), "test"}};
-  config.parameters = {param("tool.punch.friction", 0.08, 0.0, 0.5, 0.1)};
-  config.data = {data_set(data[0], 0.002)};
-  config.forward.overrides = {{"blank.elements", "40"}};
+  CalibrationConfig config = friction_from_thickness_config();
   config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test"}};
   std::vector<std::string> lines;
   CalibrationOptions options = quiet();
