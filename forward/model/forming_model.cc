@@ -608,7 +608,7 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
   const std::size_t fp = static_cast<std::size_t>(flow_points_) * static_cast<std::size_t>(e);
   const Shell9Material mat = material(e);
   Shell9State st = element_state(e);
-  if (kind == Shell9Stiffness::kTangent) {
+  if (kind == Shell9Stiffness::kTangent && primal_dual_) {
     st.dual_record = dual_[2].points.data() + fp;
     if (dual_mode_ == DualMode::kAnchor) st.dual_anchor = dual_[0].points.data() + fp;
     if (dual_mode_ == DualMode::kGiven) st.dual_given = dual_given_.data() + fp;
@@ -825,7 +825,7 @@ void FormingModel::evaluate(const FormingState& s, const Eigen::VectorXd& x, She
     if (fixed_gap_holder()) gap_.add(e, qe, want, c);
     if (!squeeze_.empty()) squeeze_.add(e, qe, want, c);
   };
-  const bool dual = kind == Shell9Stiffness::kTangent;
+  const bool dual = kind == Shell9Stiffness::kTangent && primal_dual_;
   if (dual) dual_prepare(x);
   out->potential = assembler_->assemble(kernel, x, want, &out->internal_force);
   if (dual) dual_finish(x);

@@ -249,6 +249,10 @@ class FormingModel {
   // The matrix has prescribed rows and columns decoupled (diagonal kept).
   void evaluate(const FormingState& s, const Eigen::VectorXd& x, Shell9Stiffness kind, double theta,
                 FormingSystem* out);
+  // false: kTangent is the consistent tangent, the derivative of the residual at x (rank-one part
+  // along the current flow direction; what the tests compare with finite differences); true (the
+  // default): the primal-dual tangent above.
+  void set_primal_dual(bool on) { primal_dual_ = on; }
   double potential(const FormingState& s, const Eigen::VectorXd& x);
   // After the lagged normal forces in s changed (FormingStepProblem::update_lagged): replaces the
   // Coulomb friction terms of the last evaluate(), which must have been at this x with this s,
@@ -394,6 +398,7 @@ class FormingModel {
   int dual_count_ = 0;  // valid records in dual_[0..1]
   DualMode dual_mode_ = DualMode::kNone;
   bool dual_same_point_ = false;  // the current evaluation repeats the last one's x
+  bool primal_dual_ = true;
   std::vector<Vec3> dual_given_;
 };
 
