@@ -4,11 +4,13 @@
 // 25 mm, section 5 of that README). A short fit of friction and K on the thickness-strain
 // profile at 25 mm and the load curve must end with the profile's misfit called STRUCTURAL,
 // while the same fit on the shell's own curves (synthetic, noise-free) calls nothing structural.
-// Coarse mesh (24 elements) and at most a few iterations: a few seconds.
+// Coarse mesh (24 elements) and at most a few iterations: a few seconds. And the committed
+// section-10 calibration config reproduces the fit its README documents.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -121,6 +123,35 @@ CalibrationOptions quiet() {
   CalibrationOptions o;
   o.write_report = false;
   return o;
+}
+
+// The committed section-10 config (experiments/08_continuum_reference/calibration: load from
+// 10 mm, thickness at 15 and 25 mm, normal-stress term and elastic correction on, 40 elements,
+// with its four model-form refits; about 3 s): the figures its README documents. K and n within
+// 1 % of the truth (the goal, met); friction -14.8 % (the goal, 5 %, is not met), outside
+// its statistical interval but the model-form range [0.0752, 0.0884] beside it, every data set's
+// misfit structural, and no forward warning at 40 elements.
+TEST(CalibrationContinuum, CommittedConfigReproducesItsDocumentedFit) {
+  const std::string path = std::string(VS_SOURCE_DIR) +
+                           "/experiments/08_continuum_reference/calibration/"
+                           "calibrate_ex1_mu010_contact_elastic_from10.toml";
+  const auto result =
+      calibrate(load_calibration_config(path), quiet(), make_default_forward_model());
+  ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
+  const Eigen::VectorXd v = result.free_values();
+  EXPECT_NEAR(v[0], 0.0852, 0.0005);              // friction (truth 0.1)
+  EXPECT_LT(std::abs(v[1] / 589.0 - 1.0), 0.01);  // K
+  EXPECT_LT(std::abs(v[2] / 0.216 - 1.0), 0.01);  // n
+  ASSERT_TRUE(result.uncertainty_available);
+  EXPECT_LT(result.uncertainty.parameters[0].interval_upper, 0.1);
+  ASSERT_EQ(result.model_form.size(), 4u);
+  ASSERT_EQ(result.model_form_ranges.size(), 3u);
+  EXPECT_NEAR(result.model_form_ranges[0].lower, 0.0752, 0.0005);
+  EXPECT_NEAR(result.model_form_ranges[0].upper, 0.0884, 0.0005);
+  EXPECT_TRUE(result.model_form_ranges[0].exceeds_interval);
+  for (const auto& fit : result.fits)
+    EXPECT_EQ(fit.lack_of_fit.verdict, LackOfFitVerdict::kStructural) << fit.name;
+  EXPECT_TRUE(result.forward_warnings.empty());
 }
 
 TEST(CalibrationContinuum, LackOfFitFiresOnTheContinuumProfile) {
