@@ -143,11 +143,11 @@ int check_command(const SceneArgs& args) {
   if (scene.geometry == vs::Geometry::kShell3d) {
     std::cout << "ok\n"
               << fmt::format(
-                     "{}: \"{}\": 3D shell, {} blank {} mm, thickness {} mm, {} model, {} "
+                     "{}: \"{}\": 3D shell, {} {} mm, thickness {} mm, {} model, {} "
                      "divisions{}; tools: {}; punch travel {} mm\n",
                      scene.source, scene.title,
-                     scene.blank.shape == vs::BlankShape::kCircle ? "circular, radius"
-                                                                  : "square, half side",
+                     scene.blank.shape == vs::BlankShape::kCircle ? "circular blank, radius"
+                                                                  : "square blank, half side",
                      scene.blank.radius_mm, scene.blank.thickness_mm,
                      scene.blank.symmetry == vs::BlankSymmetry::kFull ? "full" : "quarter",
                      scene.blank.divisions,

@@ -261,6 +261,22 @@ TEST(CliRun, StoppedRunExitsThreeWithTheReasonAndKeepsItsSteps) {
   EXPECT_FALSE(read_all(dir / "out" / "load_travel.csv").empty());
 }
 
+// `check` on a 3D scene names the blank and its mesh, the ring when it differs from divisions.
+TEST(CliRun, CheckSummarisesA3dBlankAndItsRing) {
+  const fs::path dir = scratch();
+  const std::string cup =
+      "check '" + std::string(VS_SOURCE_DIR) + "/data/scenes/esaform_cup_3d_hill48_tuat.toml'";
+  const Outcome plain = vshell(dir, cup);
+  EXPECT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("3D shell, circular blank, radius 53.75 mm, thickness 1 mm, quarter "
+                           "model, 6 divisions; tools: punch, die, holder"),
+            std::string::npos)
+      << plain.out;
+  const Outcome ring = vshell(dir, cup + " --set blank.radial_divisions=10");
+  EXPECT_EQ(ring.exit_code, 0) << ring.err;
+  EXPECT_NE(ring.out.find("6 divisions (10 across the ring);"), std::string::npos) << ring.out;
+}
+
 TEST(CliRun, EachClassOfBadInputExitsTwoWithOneLineNamingIt) {
   const fs::path dir = scratch();
   const std::string run = "run '" + kScene + "' -o out ";
