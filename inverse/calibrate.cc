@@ -1,6 +1,7 @@
 #include "calibrate.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -351,6 +352,10 @@ CalibrationConfig model_form_config(const CalibrationConfig& config, const Model
   c.model_forms.clear();
   c.optimizer.method = OptimizerMethod::kLevenbergMarquardt;
   for (const auto& edit : form.overrides) c.forward.overrides.push_back(edit);
+  std::erase_if(c.data, [&form](const DataSpec& d) {
+    return std::find(form.drop_data.begin(), form.drop_data.end(), d.measurement.name) !=
+           form.drop_data.end();
+  });
   for (std::size_t i = 0; i < c.parameters.size() && i < identified.size(); ++i) {
     c.parameters[i].initial = identified[i].value;
   }
@@ -361,6 +366,10 @@ std::string edits_text(const ModelFormSpec& form) {
   std::string text;
   for (const auto& [address, value] : form.overrides) {
     text += fmt::format("{}{}={}", text.empty() ? "" : " ", address, value);
+  }
+  if (!form.drop_data.empty()) {
+    text +=
+        fmt::format("{}without data {}", text.empty() ? "" : ", ", fmt::join(form.drop_data, ", "));
   }
   return text;
 }
@@ -629,6 +638,7 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       ModelFormFit fit;
       fit.name = form.name;
       fit.edits = edits_text(form);
+      fit.dropped_data = form.drop_data;
       const CalibrationResult alternative = calibrate(
           model_form_config(config, form, result.parameters), quiet, model_for_alternatives);
       fit.termination = to_string(alternative.termination);

@@ -68,7 +68,8 @@ struct BoundEffect {
 // The fit repeated under one alternative model choice ([[model_form]]).
 struct ModelFormFit {
   std::string name;
-  std::string edits;  // "blank.elements=48 ..."
+  std::string edits;                      // "blank.elements=48 ...", ", without data thick_15"
+  std::vector<std::string> dropped_data;  // ModelFormSpec::drop_data
   std::string termination;
   std::string message;
   std::vector<double> values;  // free parameters, free order (empty if it failed)

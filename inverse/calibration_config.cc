@@ -92,6 +92,19 @@ class TableReader {
     throw InputError(fmt::format("{}: '{}' is not one of {}{}", where_key(key), value, allowed,
                                  guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess)));
   }
+  // An array of strings.
+  std::optional<std::vector<std::string>> strings(const std::string& key) {
+    const toml::node* node = take(key, KeyType::kStringArray);
+    if (!node) return std::nullopt;
+    const toml::array* a = node->as_array();
+    if (!a) fail_type(key, "an array of strings", *node);
+    std::vector<std::string> out;
+    for (const toml::node& item : *a) {
+      if (!item.is_string()) fail_type(key, "an array of strings", *node);
+      out.push_back(*item.value<std::string>());
+    }
+    return out;
+  }
   std::optional<bool> boolean(const std::string& key) {
     const toml::node* node = take(key, KeyType::kBool);
     if (!node) return std::nullopt;
@@ -416,16 +429,18 @@ ModelFormSpec read_model_form(const toml::table& t, const std::string& file) {
   form.where = r.where();
   const auto name = r.string("name");
   const toml::table* set = r.table("set");
+  const auto drop = r.strings("drop_data");
   r.finish();
   if (!name) throw InputError(fmt::format("{}: [[model_form]] needs a name", form.where));
-  if (!set || set->empty()) {
+  if ((!set || set->empty()) && (!drop || drop->empty())) {
     throw InputError(fmt::format(
         "{}: [[model_form]] '{}' needs set = {{ \"address\" = value, ... }} (the scene edits of "
-        "the alternative model)",
+        "the alternative model) or drop_data = [\"data set\", ...] (the data it leaves out)",
         form.where, *name));
   }
   form.name = *name;
-  form.overrides = scene_edits(*set, file, "model_form.set");
+  if (set) form.overrides = scene_edits(*set, file, "model_form.set");
+  if (drop) form.drop_data = *drop;
   return form;
 }
 
@@ -603,9 +618,32 @@ void validate_calibration_config(const CalibrationConfig& config) {
     if (!form_names.insert(form.name).second) {
       throw InputError(fmt::format("{}: model_form name '{}' used twice", form.where, form.name));
     }
-    if (form.overrides.empty()) {
+    if (form.overrides.empty() && form.drop_data.empty()) {
+      throw InputError(fmt::format("{}: model_form '{}' has no scene edits (set) and drops no data",
+                                   form.where, form.name));
+    }
+    // The data the alternative keeps must exist and still determine the free parameters.
+    std::size_t kept = 0;
+    std::set<std::string> dropped;
+    for (const std::string& name : form.drop_data) {
+      const bool known = std::any_of(config.data.begin(), config.data.end(),
+                                     [&](const DataSpec& d) { return d.measurement.name == name; });
+      if (!known) {
+        throw InputError(
+            fmt::format("{}: model_form '{}': drop_data names '{}', which is not a "
+                        "data set of this config",
+                        form.where, form.name, name));
+      }
+      dropped.insert(name);
+    }
+    for (const DataSpec& d : config.data) {
+      if (!dropped.count(d.measurement.name)) kept += d.measurement.x.size();
+    }
+    if (kept < static_cast<std::size_t>(free) || dropped.size() == config.data.size()) {
       throw InputError(
-          fmt::format("{}: model_form '{}' has no scene edits (set)", form.where, form.name));
+          fmt::format("{}: model_form '{}': the data it keeps ({} points) cannot "
+                      "determine {} free parameters",
+                      form.where, form.name, kept, free));
     }
   }
   if (!(config.optimizer.noise_floor_factor >= 0.0) ||

@@ -73,6 +73,7 @@ struct ModelFormSpec {
   std::string name;
   std::vector<std::pair<std::string, std::string>> overrides;  // address, value as text
   std::string where;                                           // config file:line
+  std::vector<std::string> drop_data;  // data sets (names) the alternative fit leaves out
 };
 
 struct CalibrationConfig {

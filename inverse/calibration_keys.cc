@@ -305,11 +305,21 @@ std::vector<KeySpec> build() {
 
   k.push_back(required("model_form", "name", kString,
                        "Label of the alternative model choice in the report."));
-  k.push_back(required("model_form", "set", KeyType::kTable,
-                       "Scene edits of the alternative, as in [forward.set] and added to it: "
-                       "{ \"blank.elements\" = 48 }, { \"numerics.thickness_points\" = 9 }, "
-                       "{ \"numerics.strain_rate_cutoff\" = 1e-4 }. Checked before any "
-                       "forward run."));
+  k.push_back(key(
+      "model_form", "set", KeyType::kTable, "", Range{}, [] { return std::string("none"); },
+      "Scene edits of the alternative, as in [forward.set] and added to it: "
+      "{ \"blank.elements\" = 48 }, { \"numerics.thickness_points\" = 9 }, "
+      "{ \"numerics.strain_rate_cutoff\" = 1e-4 }. Checked before any forward "
+      "run. An alternative has set, drop_data or both."));
+  k.push_back(key(
+      "model_form", "drop_data", KeyType::kStringArray, "", Range{},
+      [] { return std::string("none"); },
+      "Data sets (their names in the report) the alternative fit leaves out: "
+      "[\"thick_15\"]. A data choice as a model-form alternative: when the data "
+      "sets agree on the parameters only within the statistical intervals, leaving "
+      "one out moves the fit little; when the model cannot represent all of them at "
+      "once, the range shows it. What it keeps must still determine the free "
+      "parameters (checked before any forward run)."));
 
   k.push_back(key(
       "forward", "tolerance", kFloat, "", closed(0, 0.1),

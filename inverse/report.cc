@@ -295,6 +295,7 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
     for (const auto& f : result.model_form) {
       ordered_json entry = {{"name", f.name},
                             {"scene_edits", f.edits},
+                            {"dropped_data", f.dropped_data},
                             {"termination", f.termination},
                             {"message", f.message},
                             {"forward_runs", f.forward_runs}};

@@ -196,6 +196,7 @@ void store_key_value(const KeySpec& key, const toml::node& node, const std::stri
       if (f.numbers) f.numbers(scene, tool) = read_float_array(key, node, address, where);
       return;
     case KeyType::kPairArray:
+    case KeyType::kStringArray:
     case KeyType::kTable:
       return;
   }

@@ -28,6 +28,8 @@ std::string type_text(const KeySpec& key) {
       return "array of float";
     case KeyType::kPairArray:
       return "array of [float, float]";
+    case KeyType::kStringArray:
+      return "array of string";
     case KeyType::kTable:
       return "table";
   }

@@ -620,6 +620,7 @@ std::string default_toml_text(const KeySpec& key) {
       return s + "]";
     }
     case KeyType::kPairArray:
+    case KeyType::kStringArray:
     case KeyType::kTable:
       return "";
   }

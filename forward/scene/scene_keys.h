@@ -24,10 +24,11 @@ enum class KeyType {
   kInt,    // TOML integer only
   kBool,
   kString,
-  kEnum,        // string from KeySpec::choices
-  kFloatArray,  // [x, ...]; KeySpec::range applies to each element
-  kPairArray,   // [[x, y], ...] (the inline hardening table)
-  kTable,       // a table of keys the owner reads itself (calibration: [forward.set], columns)
+  kEnum,         // string from KeySpec::choices
+  kFloatArray,   // [x, ...]; KeySpec::range applies to each element
+  kPairArray,    // [[x, y], ...] (the inline hardening table)
+  kStringArray,  // ["a", ...] (calibration: model_form.drop_data)
+  kTable,        // a table of keys the owner reads itself (calibration: [forward.set], columns)
 };
 
 // Interval of allowed values; an infinite bound is written inf and is only reachable if closed.

@@ -106,6 +106,7 @@ lack_of_fit_min_resolutions = 20
 [[model_form]]
 name = "fine mesh"
 set = { "blank.elements" = 40 }
+drop_data = ["thick"]
 [forward]
 tolerance = 1e-8
 [forward.set]

@@ -389,8 +389,8 @@ CalibrationConfig friction_from_thickness_config() {
 // the identified friction a little: the range must contain the main fit and the alternative.
 TEST(ModelForm, RangeOverTheAlternatives) {
   CalibrationConfig config = friction_from_thickness_config();
-  config.model_forms = {{"coarse mesh", {{"blank.elements", "8"}}, "test"},
-                        {"same mesh", {{"blank.elements", "40"}}, "test"}};
+  config.model_forms = {{"coarse mesh", {{"blank.elements", "8"}}, "test", {}},
+                        {"same mesh", {{"blank.elements", "40"}}, "test", {}}};
   const auto result = calibrate(config, quiet(), StretchingFake{});
   ASSERT_EQ(result.model_form.size(), 2u);
   ASSERT_EQ(result.model_form_ranges.size(), 1u);
@@ -426,7 +426,7 @@ struct WarningStretchingFake {
 // model-form fit carries its own (here only the fine mesh's runs warn about the element length).
 TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachModelForm) {
   CalibrationConfig config = friction_from_thickness_config();
-  config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test"}};
+  config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test", {}}};
   std::vector<std::string> lines;
   CalibrationOptions options = quiet();
   options.progress = [&lines](const std::string& line) { lines.push_back(line); };
@@ -460,10 +460,67 @@ TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachMode
   EXPECT_EQ(quiet_result.brief_report().find("warns"), std::string::npos);
 }
 
+// drop_data: an alternative that leaves a data set out. The thickness profile is the truth's
+// (friction 0.1), the load is 3 % high, so the main fit (both) is pulled off 0.1 and the
+// alternative without the load is exactly the fit on the profile alone.
+TEST(ModelForm, DropDataRefitsWithoutTheNamedDataSets) {
+  CalibrationConfig config = friction_from_thickness_config();
+  Scene scene = load_scene(config.scenes[0].path);
+  scene.process.output_travels_mm = {25.0};
+  scene.blank.elements = 40;
+  std::vector<double> travels;
+  for (int i = 1; i <= 25; ++i) travels.push_back(i);
+  auto load = make_synthetic_measurements(
+      scene, StretchingFake{}(scene), {{MeasurementKind::kLoadTravel, "load", 0.0, travels}}, 1);
+  for (double& y : load[0].y) y *= 1.03;
+  config.data.push_back(data_set(load[0], 50.0));
+  CalibrationConfig profile_only = config;
+  profile_only.data.pop_back();
+  config.model_forms = {{"profile only", {}, "test", {"load"}}};
+  const auto result = calibrate(config, quiet(), StretchingFake{});
+  const auto direct = calibrate(profile_only, quiet(), StretchingFake{});
+  ASSERT_EQ(result.model_form.size(), 1u);
+  ASSERT_EQ(result.model_form[0].values.size(), 1u);
+  const double main = result.free_values()[0], without = result.model_form[0].values[0];
+  EXPECT_NEAR(direct.free_values()[0], 0.1, 1e-4);
+  EXPECT_NEAR(without, direct.free_values()[0], 1e-6);
+  EXPECT_GT(std::abs(main - without), 1e-3);  // the biased load moves the main fit
+  EXPECT_DOUBLE_EQ(result.model_form_ranges[0].lower, std::min(main, without));
+  EXPECT_DOUBLE_EQ(result.model_form_ranges[0].upper, std::max(main, without));
+  EXPECT_EQ(result.model_form[0].edits, "without data load");
+  EXPECT_EQ(result.model_form[0].dropped_data, std::vector<std::string>{"load"});
+  EXPECT_NE(calibration_json(result, config).find("\"dropped_data\": [\n          \"load\""),
+            std::string::npos);
+
+  // Checked before any run: a name that is no data set, and an alternative left without data.
+  std::atomic<int> calls{0};
+  StretchingFake counting;
+  counting.calls = &calls;
+  const auto error = [&](std::vector<std::string> drop) {
+    CalibrationConfig bad = config;
+    bad.model_forms = {{"bad", {}, "cal.toml:9", std::move(drop)}};
+    try {
+      calibrate(bad, quiet(), counting);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error({"lod"}).find("cal.toml:9: model_form 'bad': drop_data names 'lod', which is "
+                                "not a data set of this config"),
+            std::string::npos);
+  EXPECT_NE(error({"load", "thick_25"})
+                .find("cal.toml:9: model_form 'bad': the data it keeps "
+                      "(0 points) cannot determine 1 free parameters"),
+            std::string::npos);
+  EXPECT_NE(error({}).find("has no scene edits (set) and drops no data"), std::string::npos);
+  EXPECT_EQ(calls.load(), 0);
+}
+
 TEST(ModelForm, BadSceneEditIsAnInputErrorBeforeAnyRun) {
   const fs::path dir = scratch_dir();
   CalibrationConfig config = linear_config(dir, linear_data(480.0, 0.15, 0.0, 20.0, 7), 20.0);
-  config.model_forms = {{"bad", {{"blank.elements", "-3"}}, "cal.toml:12"}};
+  config.model_forms = {{"bad", {{"blank.elements", "-3"}}, "cal.toml:12", {}}};
   std::atomic<int> calls{0};
   StretchingFake fake;
   fake.calls = &calls;
