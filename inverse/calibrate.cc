@@ -352,10 +352,7 @@ CalibrationConfig model_form_config(const CalibrationConfig& config, const Model
   c.model_forms.clear();
   c.optimizer.method = OptimizerMethod::kLevenbergMarquardt;
   for (const auto& edit : form.overrides) c.forward.overrides.push_back(edit);
-  std::erase_if(c.data, [&form](const DataSpec& d) {
-    return std::find(form.drop_data.begin(), form.drop_data.end(), d.measurement.name) !=
-           form.drop_data.end();
-  });
+  std::erase_if(c.data, [&form](const DataSpec& d) { return form.drops(d.measurement.name); });
   for (std::size_t i = 0; i < c.parameters.size() && i < identified.size(); ++i) {
     c.parameters[i].initial = identified[i].value;
   }

@@ -622,9 +622,8 @@ void validate_calibration_config(const CalibrationConfig& config) {
       throw InputError(fmt::format("{}: model_form '{}' has no scene edits (set) and drops no data",
                                    form.where, form.name));
     }
-    // The data the alternative keeps must exist and still determine the free parameters.
-    std::size_t kept = 0;
-    std::set<std::string> dropped;
+    // The data the alternative drops must exist, and what it keeps still determine the free
+    // parameters (free >= 1, so keeping nothing fails too).
     for (const std::string& name : form.drop_data) {
       const bool known = std::any_of(config.data.begin(), config.data.end(),
                                      [&](const DataSpec& d) { return d.measurement.name == name; });
@@ -634,12 +633,12 @@ void validate_calibration_config(const CalibrationConfig& config) {
                         "data set of this config",
                         form.where, form.name, name));
       }
-      dropped.insert(name);
     }
+    std::size_t kept = 0;
     for (const DataSpec& d : config.data) {
-      if (!dropped.count(d.measurement.name)) kept += d.measurement.x.size();
+      if (!form.drops(d.measurement.name)) kept += d.measurement.x.size();
     }
-    if (kept < static_cast<std::size_t>(free) || dropped.size() == config.data.size()) {
+    if (kept < static_cast<std::size_t>(free)) {
       throw InputError(
           fmt::format("{}: model_form '{}': the data it keeps ({} points) cannot "
                       "determine {} free parameters",

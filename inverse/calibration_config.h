@@ -7,6 +7,7 @@
 // raised before any forward run.
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,9 @@ struct ModelFormSpec {
   std::vector<std::pair<std::string, std::string>> overrides;  // address, value as text
   std::string where;                                           // config file:line
   std::vector<std::string> drop_data;  // data sets (names) the alternative fit leaves out
+  bool drops(const std::string& data_name) const {
+    return std::find(drop_data.begin(), drop_data.end(), data_name) != drop_data.end();
+  }
 };
 
 struct CalibrationConfig {
