@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <memory>
@@ -205,6 +206,7 @@ std::vector<DataSetFit> make_fits(const ResidualPipeline& pipeline, const Evalua
     fit.ok = curve.ok;
     fit.simulated = curve.ok ? curve.y : std::vector<double>(m.x.size(), kNaN);
     fit.shape_only = d.shape_only;
+    fit.correction = d.correction;
     if (curve.ok && d.shape_only) {
       const SimulatedCurve raw = simulate_curve(m, e.runs.at(d.scene), d.scene_spec.get());
       fit.shape_offset_mm = raw.ok && !raw.y.empty() ? curve.y.front() - raw.y.front() : kNaN;
@@ -344,12 +346,75 @@ std::vector<BoundEffect> bound_effects(const Eigen::MatrixXd& jacobian, const Ei
   return effects;
 }
 
+// The scenes of a discrepancy source: each scene at the reference's parameters (the source's
+// `set`: a parameter's address gives its value, any other address is a scene edit). Throws
+// InputError.
+std::vector<Scene> discrepancy_scenes(const CalibrationConfig& config,
+                                      const DiscrepancySpec& source) {
+  CalibrationConfig c = config;
+  auto is_parameter = [&c](const std::string& address) {
+    return std::any_of(c.parameters.begin(), c.parameters.end(),
+                       [&address](const ParameterSpec& p) { return p.address == address; });
+  };
+  for (const auto& edit : source.set) {
+    if (!is_parameter(edit.first)) c.forward.overrides.push_back(edit);
+  }
+  const std::vector<SceneBinding> bindings = bind_scenes(c);
+  std::vector<double> values;
+  for (const ParameterSpec& p : c.parameters) {
+    double value = p.initial;
+    for (const auto& [address, text] : source.set) {
+      if (address == p.address) value = std::strtod(text.c_str(), nullptr);  // validated
+    }
+    values.push_back(value);
+  }
+  std::vector<Scene> scenes;
+  for (const SceneBinding& b : bindings) scenes.push_back(b.bind(values));
+  return scenes;
+}
+
+// A forward run that reports an exception as a failed run (forward_model.h).
+RunResult run_guarded(const ForwardModel& model, const Scene& scene) {
+  try {
+    return model(scene);
+  } catch (const std::exception& e) {
+    RunResult run;
+    run.termination = Termination::kFailed;
+    run.message = e.what();
+    return run;
+  }
+}
+
+// The model-form alternatives to refit: the config's, and with two or more discrepancy sources
+// each source alone.
+std::vector<ModelFormSpec> model_form_alternatives(const CalibrationConfig& config) {
+  std::vector<ModelFormSpec> forms = config.model_forms;
+  if (config.discrepancy_alternatives && config.discrepancies.size() >= 2) {
+    for (const DiscrepancySpec& source : config.discrepancies) {
+      ModelFormSpec form;
+      form.name = fmt::format("discrepancy '{}' alone", source.name);
+      form.where = source.where;
+      form.discrepancy = std::vector<std::string>{source.name};
+      forms.push_back(form);
+    }
+  }
+  return forms;
+}
+
 // The configuration of one model-form refit: the alternative's scene edits added to
-// [forward.set], started from the identified values, plain Levenberg-Marquardt.
+// [forward.set], its data and discrepancy sources, started from the identified values, plain
+// Levenberg-Marquardt.
 CalibrationConfig model_form_config(const CalibrationConfig& config, const ModelFormSpec& form,
                                     const std::vector<ParameterResult>& identified) {
   CalibrationConfig c = config;
   c.model_forms.clear();
+  c.discrepancy_alternatives = false;
+  if (form.discrepancy) {
+    std::erase_if(c.discrepancies, [&form](const DiscrepancySpec& d) {
+      return std::find(form.discrepancy->begin(), form.discrepancy->end(), d.name) ==
+             form.discrepancy->end();
+    });
+  }
   c.optimizer.method = OptimizerMethod::kLevenbergMarquardt;
   for (const auto& edit : form.overrides) c.forward.overrides.push_back(edit);
   std::erase_if(c.data, [&form](const DataSpec& d) { return form.drops(d.measurement.name); });
@@ -367,6 +432,13 @@ std::string edits_text(const ModelFormSpec& form) {
   if (!form.drop_data.empty()) {
     text +=
         fmt::format("{}without data {}", text.empty() ? "" : ", ", fmt::join(form.drop_data, ", "));
+  }
+  if (form.discrepancy) {
+    text += fmt::format(
+        "{}{}", text.empty() ? "" : ", ",
+        form.discrepancy->empty()
+            ? std::string("without the discrepancy correction")
+            : fmt::format("corrected by '{}' only", fmt::join(*form.discrepancy, "', '")));
   }
   return text;
 }
@@ -422,6 +494,22 @@ std::string CalibrationResult::brief_report() const {
       text += fmt::format("  {:32s} {:>14.6g} {}\n", p.spec.address, p.value, p.unit);
     }
     ++k;
+  }
+  if (!discrepancies.empty()) {
+    text += fmt::format(
+        "  discrepancy correction in the simulated curves: the mean of {} reference(s) ({} "
+        "forward runs at their parameters):\n",
+        discrepancies.size(), discrepancy_forward_runs);
+    for (const auto& source : discrepancies) {
+      std::string sizes;
+      for (const auto& c : source.curves) {
+        const std::string unit = c.unit == "1" ? "" : " " + c.unit;
+        sizes += fmt::format("{}{} rms {:.3g}{} (max {:.3g}{})", sizes.empty() ? "" : ", ", c.data,
+                             c.rms, unit, c.max_abs, unit);
+      }
+      text += fmt::format("    '{}' ({}): {}\n", source.name, source.edits,
+                          source.ok ? sizes : source.message);
+    }
   }
   if (!model_form_ranges.empty()) {
     text += fmt::format(
@@ -487,14 +575,43 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       throw InputError(fmt::format("{}: model_form '{}': {}", form.where, form.name, e.what()));
     }
   }
+  for (const DiscrepancySpec& source : config.discrepancies) {
+    try {
+      discrepancy_scenes(config, source);
+    } catch (const InputError& e) {
+      throw InputError(
+          fmt::format("{}: discrepancy '{}': {}", source.where, source.name, e.what()));
+    }
+  }
+  const std::vector<ModelFormSpec> forms = model_form_alternatives(config);
 
   CalibrationResult result;
   for (const auto& b : bindings) result.scene_sources.push_back(b.source());
   for (const auto& d : config.data) {
     result.data_weighting.push_back({d.measurement.name, data_set_sigma(d).text, !sigma_stated(d)});
   }
-  const ForwardModel model_for_alternatives = config.model_forms.empty() ? ForwardModel{} : model;
-  ResidualPipeline pipeline(make_data_sets(config, bindings));
+  const ForwardModel model_for_alternatives = forms.empty() ? ForwardModel{} : model;
+  std::vector<DataSet> data_sets = make_data_sets(config, bindings);
+  std::string start_failure;  // a discrepancy source whose forward run failed
+  for (const DiscrepancySpec& source : config.discrepancies) {
+    DiscrepancySource learned;
+    learned.name = source.name;
+    say(fmt::format("discrepancy '{}': forward run at the reference's parameters", source.name));
+    std::vector<RunResult> runs;
+    for (const Scene& scene : discrepancy_scenes(config, source)) {
+      runs.push_back(run_guarded(model, scene));
+      ++result.discrepancy_forward_runs;
+    }
+    result.discrepancies.push_back(learn_discrepancy(source, data_sets, runs));
+    if (!result.discrepancies.back().ok && start_failure.empty()) {
+      start_failure = result.discrepancies.back().message;
+    }
+  }
+  if (start_failure.empty() && !result.discrepancies.empty()) {
+    const auto corrections = mean_corrections(result.discrepancies, data_sets);
+    for (std::size_t k = 0; k < data_sets.size(); ++k) data_sets[k].correction = corrections[k];
+  }
+  ResidualPipeline pipeline(std::move(data_sets));
   const Eigen::VectorXd noise = residual_noise(config, bindings, pipeline);
   // The scale of the lack-of-fit diagnostic for data sets with no stated sigma: the forward
   // resolution exists whether or not the noise-floor stop is on.
@@ -525,6 +642,21 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
                   result.scene_sources.size(), config.optimizer.threads));
 
   const Eigen::VectorXd x0 = objective.initial();
+  // Nothing to fit from: stop now, with the reason, the parameters at their initial values.
+  auto stop_at_start = [&](const std::string& message, double cost) {
+    result.termination = CalibrationTermination::kFailed;
+    result.message = message;
+    result.uncertainty_message = "no fit";
+    const auto values = cache.all_values(x0);
+    for (std::size_t i = 0; i < cache.parameters().size(); ++i) {
+      const ParameterSpec& spec = cache.parameters()[i];
+      result.parameters.push_back({spec, unit_of_address(spec.address), values[i]});
+    }
+    result.final_cost = cost;
+    finish(cache, config, options, start, &result);
+    return result;
+  };
+  if (!start_failure.empty()) return stop_at_start(start_failure, kNaN);
   const auto first = objective.evaluate(x0);
   result.initial_cost = first->cost;
   // Said at once: a long fit on a model that warns (a mesh finer than the thickness, ...) can be
@@ -532,19 +664,9 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   for (const std::string& w : forward_warnings(*first, result.scene_sources))
     say("warning: at the initial parameters the forward model warns: " + w);
   if (!first->ok) {
-    // Nothing to fit from: stop now, with the forward run's own reason.
-    result.termination = CalibrationTermination::kFailed;
-    result.message = "the forward run at the initial parameters fails: " +
-                     first_failure(*first, result.scene_sources);
-    result.uncertainty_message = "no fit";
-    const auto values = cache.all_values(x0);
-    for (std::size_t i = 0; i < cache.parameters().size(); ++i) {
-      const ParameterSpec& spec = cache.parameters()[i];
-      result.parameters.push_back({spec, unit_of_address(spec.address), values[i]});
-    }
-    result.final_cost = first->cost;
-    finish(cache, config, options, start, &result);
-    return result;
+    return stop_at_start("the forward run at the initial parameters fails: " +
+                             first_failure(*first, result.scene_sources),
+                         first->cost);
   }
   Eigen::VectorXd x_start = x0;
   if (config.optimizer.method == OptimizerMethod::kGlobalThenLocal) {
@@ -623,11 +745,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
         "the forward model fails at the final point: " + final_point->message;
   }
 
-  if (result.termination != CalibrationTermination::kFailed && !config.model_forms.empty()) {
+  if (result.termination != CalibrationTermination::kFailed && !forms.empty()) {
     // Model-form sensitivity: the same fit under each alternative model choice, from here.
     const Eigen::VectorXd main_values = result.free_values();
     Eigen::VectorXd lower = main_values, upper = main_values;
-    for (const ModelFormSpec& form : config.model_forms) {
+    for (const ModelFormSpec& form : forms) {
       say(fmt::format("model form '{}': refit with {}", form.name, edits_text(form)));
       CalibrationOptions quiet;
       quiet.write_report = false;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "calibration_config.h"
+#include "discrepancy.h"
 #include "forward_cache.h"
 #include "forward_model.h"
 #include "lack_of_fit.h"
@@ -49,6 +50,8 @@ struct DataSetFit {
   bool shape_only = false;
   double shape_offset_mm = 0.0;
   LackOfFit lack_of_fit;  // of weight x (simulated - measured), in abscissa order
+  // The discrepancy correction included in `simulated` (discrepancy.h); empty: none.
+  std::vector<double> correction;
 };
 
 // A free parameter that ended on a bound, and what the bound does to the fit: the cost
@@ -120,6 +123,9 @@ struct CalibrationResult {
   std::vector<ModelFormFit> model_form;    // one per [[model_form]]
   std::vector<ModelFormRange> model_form_ranges;  // free order, when model_form is not empty
   int model_form_forward_runs = 0;
+  // [[discrepancy]] sources, learned before the fit (discrepancy.h), and their forward runs.
+  std::vector<DiscrepancySource> discrepancies;
+  int discrepancy_forward_runs = 0;
   bool global_search_used = false;
   GlobalSearchSummary global;  // when used
   std::vector<DataSetFit> fits;

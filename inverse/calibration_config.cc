@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -393,7 +394,7 @@ void read_uncertainty(const toml::table* t, const std::string& file, Uncertainty
 // [forward.set] values as command-line text: scene_from_table checks them later.
 std::string value_text(const toml::node& node, const std::string& where) {
   if (node.is_integer()) return fmt::format("{}", *node.value<long long>());
-  if (node.is_floating_point()) return fmt::format("{:.17g}", *node.value<double>());
+  if (node.is_floating_point()) return fmt::format("{}", *node.value<double>());
   if (node.is_boolean()) return *node.value<bool>() ? "true" : "false";
   if (node.is_string()) return *node.value<std::string>();
   throw InputError(fmt::format("{}: must be a number, boolean or string", where));
@@ -430,18 +431,78 @@ ModelFormSpec read_model_form(const toml::table& t, const std::string& file) {
   const auto name = r.string("name");
   const toml::table* set = r.table("set");
   const auto drop = r.strings("drop_data");
+  form.discrepancy = r.strings("discrepancy");
   r.finish();
   if (!name) throw InputError(fmt::format("{}: [[model_form]] needs a name", form.where));
-  if ((!set || set->empty()) && (!drop || drop->empty())) {
+  if ((!set || set->empty()) && (!drop || drop->empty()) && !form.discrepancy) {
     throw InputError(fmt::format(
         "{}: [[model_form]] '{}' needs set = {{ \"address\" = value, ... }} (the scene edits of "
-        "the alternative model) or drop_data = [\"data set\", ...] (the data it leaves out)",
+        "the alternative model), drop_data = [\"data set\", ...] (the data it leaves out) or "
+        "discrepancy = [\"source\", ...] (the discrepancy sources it keeps)",
         form.where, *name));
   }
   form.name = *name;
   if (set) form.overrides = scene_edits(*set, file, "model_form.set");
   if (drop) form.drop_data = *drop;
   return form;
+}
+
+// [[discrepancy]]: the reference files are read with the kinds of the data sets they cover.
+DiscrepancySpec read_discrepancy(const toml::table& t, const std::string& file,
+                                 const std::string& base_dir, const std::vector<DataSpec>& data) {
+  TableReader r(t, file, "discrepancy");
+  DiscrepancySpec spec;
+  spec.where = r.where();
+  const auto name = r.string("name");
+  const toml::table* set = r.table("set");
+  const toml::table* files = r.table("files");
+  r.finish();
+  if (!name || name->empty()) {
+    throw InputError(fmt::format("{}: [[discrepancy]] needs a name", spec.where));
+  }
+  spec.name = *name;
+  if (!set || set->empty()) {
+    throw InputError(fmt::format(
+        "{}: [[discrepancy]] '{}' needs set = {{ \"address\" = value, ... }}: the parameters "
+        "(every free one) the reference was computed at",
+        spec.where, spec.name));
+  }
+  spec.set = scene_edits(*set, file, "discrepancy.set");
+  if (!files || files->empty()) {
+    throw InputError(fmt::format(
+        "{}: [[discrepancy]] '{}' needs files = {{ <data set name> = \"reference.csv\", ... }}",
+        spec.where, spec.name));
+  }
+  for (const auto& [key, node] : *files) {
+    const std::string data_name(key.str());
+    const std::string where =
+        fmt::format("{}:{}: key 'discrepancy.files.{}'", file, node.source().begin.line, data_name);
+    if (!node.is_string()) {
+      throw InputError(fmt::format("{}: must be a string (the reference's file), got {}", where,
+                                   toml_type_name(node)));
+    }
+    const auto d = std::find_if(data.begin(), data.end(),
+                                [&](const DataSpec& x) { return x.measurement.name == data_name; });
+    if (d == data.end()) {
+      std::string known;
+      for (const DataSpec& x : data) known += (known.empty() ? "" : ", ") + x.measurement.name;
+      throw InputError(fmt::format("{}: '{}' is not a data set of this config (data sets: {})",
+                                   where, data_name, known));
+    }
+    Measurement reference = read_measurement_file(resolve(base_dir, *node.value<std::string>()),
+                                                  d->measurement.kind, {});
+    if (is_strain_profile(reference.kind) && reference.travel_mm > 0.0 &&
+        std::abs(reference.travel_mm - d->measurement.travel_mm) >
+            1e-6 * std::max(1.0, d->measurement.travel_mm)) {
+      throw InputError(fmt::format(
+          "{}: {} is a profile at {} mm of punch travel, data set '{}' one at {} mm", where,
+          reference.file, reference.travel_mm, data_name, d->measurement.travel_mm));
+    }
+    reference.name = data_name;
+    reference.travel_mm = d->measurement.travel_mm;
+    spec.references.emplace_back(data_name, std::move(reference));
+  }
+  return spec;
 }
 
 }  // namespace
@@ -451,9 +512,9 @@ CalibrationConfig load_calibration_config(const std::string& path) {
   const std::string base_dir = fs::path(path).parent_path().string();
   CalibrationConfig config;
   config.path = path;
-  TableReader top(
-      root, path, "",
-      {"parameter", "data", "optimizer", "uncertainty", "model_form", "forward", "output"});
+  TableReader top(root, path, "",
+                  {"parameter", "data", "optimizer", "uncertainty", "model_form", "discrepancy",
+                   "forward", "output"});
   config.scenes = read_scenes(top, path, base_dir);
   for (const toml::table* t : table_array(top, "parameter")) {
     config.parameters.push_back(read_parameter(*t, path));
@@ -466,6 +527,9 @@ CalibrationConfig load_calibration_config(const std::string& path) {
   read_forward(top.table("forward"), path, config.forward);
   for (const toml::table* t : table_array(top, "model_form")) {
     config.model_forms.push_back(read_model_form(*t, path));
+  }
+  for (const toml::table* t : table_array(top, "discrepancy")) {
+    config.discrepancies.push_back(read_discrepancy(*t, path, base_dir, config.data));
   }
   if (const toml::table* output = top.table("output")) {
     TableReader r(*output, path, "output");
@@ -618,9 +682,21 @@ void validate_calibration_config(const CalibrationConfig& config) {
     if (!form_names.insert(form.name).second) {
       throw InputError(fmt::format("{}: model_form name '{}' used twice", form.where, form.name));
     }
-    if (form.overrides.empty() && form.drop_data.empty()) {
-      throw InputError(fmt::format("{}: model_form '{}' has no scene edits (set) and drops no data",
-                                   form.where, form.name));
+    if (form.overrides.empty() && form.drop_data.empty() && !form.discrepancy) {
+      throw InputError(
+          fmt::format("{}: model_form '{}' has no scene edits (set), drops no data and keeps every "
+                      "discrepancy source",
+                      form.where, form.name));
+    }
+    for (const std::string& source : form.discrepancy.value_or(std::vector<std::string>{})) {
+      const bool known = std::any_of(config.discrepancies.begin(), config.discrepancies.end(),
+                                     [&](const DiscrepancySpec& x) { return x.name == source; });
+      if (!known) {
+        throw InputError(fmt::format(
+            "{}: model_form '{}': discrepancy names '{}', which is not a [[discrepancy]] of "
+            "this config",
+            form.where, form.name, source));
+      }
     }
     // The data the alternative drops must exist, and what it keeps still determine the free
     // parameters (free >= 1, so keeping nothing fails too).
@@ -643,6 +719,57 @@ void validate_calibration_config(const CalibrationConfig& config) {
           fmt::format("{}: model_form '{}': the data it keeps ({} points) cannot "
                       "determine {} free parameters",
                       form.where, form.name, kept, free));
+    }
+  }
+  std::set<std::string> source_names;
+  for (const DiscrepancySpec& source : config.discrepancies) {
+    if (!source_names.insert(source.name).second) {
+      throw InputError(
+          fmt::format("{}: discrepancy name '{}' used twice", source.where, source.name));
+    }
+    // The forward model is run at the reference's parameters: each free one must be given, as a
+    // number.
+    std::vector<std::string> missing;
+    for (const ParameterSpec& p : config.parameters) {
+      const auto entry = std::find_if(source.set.begin(), source.set.end(),
+                                      [&p](const auto& edit) { return edit.first == p.address; });
+      if (entry == source.set.end()) {
+        if (!p.fixed) missing.push_back(p.address);
+        continue;
+      }
+      char* end = nullptr;
+      const double value = std::strtod(entry->second.c_str(), &end);
+      if (end == entry->second.c_str() || *end != '\0' || !std::isfinite(value)) {
+        throw InputError(fmt::format("{}: discrepancy '{}': set {} = {} must be a number",
+                                     source.where, source.name, p.address, entry->second));
+      }
+    }
+    if (!missing.empty()) {
+      std::string list;
+      for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+      throw InputError(fmt::format(
+          "{}: discrepancy '{}': set must give every free parameter at the value the reference "
+          "was computed with (missing: {})",
+          source.where, source.name, list));
+    }
+    // The reference must span the data it corrects (no extrapolation).
+    for (const auto& [data_name, reference] : source.references) {
+      const auto d = std::find_if(config.data.begin(), config.data.end(), [&](const DataSpec& x) {
+        return x.measurement.name == data_name;
+      });
+      if (d == config.data.end()) {
+        throw InputError(fmt::format("{}: discrepancy '{}': '{}' is not a data set of this config",
+                                     source.where, source.name, data_name));
+      }
+      const Measurement& m = d->measurement;
+      const double slack = 1e-9 * std::max(1.0, std::abs(m.x.back()));
+      if (reference.x.front() > m.x.front() + slack || reference.x.back() < m.x.back() - slack) {
+        throw InputError(fmt::format(
+            "{}: discrepancy '{}': {} spans {} = {} to {}, but data set '{}' needs {} to {} (a "
+            "reference is interpolated, never extrapolated)",
+            source.where, source.name, reference.file, abscissa_name(m.kind), reference.x.front(),
+            reference.x.back(), data_name, m.x.front(), m.x.back()));
+      }
     }
   }
   if (!(config.optimizer.noise_floor_factor >= 0.0) ||

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,9 +76,27 @@ struct ModelFormSpec {
   std::vector<std::pair<std::string, std::string>> overrides;  // address, value as text
   std::string where;                                           // config file:line
   std::vector<std::string> drop_data;  // data sets (names) the alternative fit leaves out
+  // The [[discrepancy]] sources (names) the alternative keeps; all when unset, none when empty.
+  std::optional<std::vector<std::string>> discrepancy;
   bool drops(const std::string& data_name) const {
     return std::find(drop_data.begin(), drop_data.end(), data_name) != drop_data.end();
   }
+};
+
+// A model-discrepancy source ([[discrepancy]]): the curves of a higher-fidelity reference model
+// (a continuum FE run, ...) at known parameters, one per data set it covers. calibrate() runs the
+// forward model at the same parameters and adds, at every data point, reference - forward to the
+// simulated values of the fit (the bias term of Kennedy and O'Hagan, J. R. Statist. Soc. B 63,
+// 2001, here fixed at its value at the reference's parameters: the forward model's model-form
+// error under the data's conditions, taken to change little with the parameters; each source
+// alone is a model-form alternative, which measures that). Several sources: their mean.
+struct DiscrepancySpec {
+  std::string name;
+  // The reference's parameters (every free one) and any other scene edits, as in [forward.set].
+  std::vector<std::pair<std::string, std::string>> set;
+  // Data-set name and the reference's curve for it (read with the data set's kind).
+  std::vector<std::pair<std::string, Measurement>> references;
+  std::string where;  // config file:line
 };
 
 struct CalibrationConfig {
@@ -89,6 +108,10 @@ struct CalibrationConfig {
   UncertaintyOptions uncertainty;
   ForwardSettings forward;
   std::vector<ModelFormSpec> model_forms;
+  std::vector<DiscrepancySpec> discrepancies;
+  // With two or more discrepancy sources, calibrate() adds a model-form alternative per source
+  // (that source alone); false in the refits themselves.
+  bool discrepancy_alternatives = true;
   std::string output_directory = "calib_out";
   bool plots = true;
 };

@@ -322,6 +322,33 @@ std::vector<KeySpec> build() {
       "parameters (checked before any forward run)."));
 
   k.push_back(key(
+      "model_form", "discrepancy", KeyType::kStringArray, "", Range{},
+      [] { return std::string("(every source)"); },
+      "The [[discrepancy]] sources (their names) the alternative keeps: [\"continuum, "
+      "friction 0\"] refits with that source's correction alone, [] without any correction. "
+      "With two or more sources an alternative per source is added by itself; use this for "
+      "other subsets or for the fit without correction."));
+
+  k.push_back(required("discrepancy", "name", kString,
+                       "Label of the reference in the report and in model_form.discrepancy."));
+  k.push_back(
+      key("discrepancy", "set", KeyType::kTable, "", Range{}, nullptr,
+          "The parameters the reference was computed with, every free one (and a fixed one where "
+          "it differs), plus any other scene edit that makes the forward model the reference's "
+          "twin, as in [forward.set] and added to it: { \"tool.punch.friction\" = 0.0, "
+          "\"material.hardening.K_MPa\" = 530 }. The forward model is run once at these values "
+          "before the fit."));
+  k.back().required = true;
+  k.push_back(
+      key("discrepancy", "files", KeyType::kTable, "", Range{}, nullptr,
+          "The reference's curves, one per data set it covers, by data-set name: { thick_25 = "
+          "\"continuum/thick_25.csv\", load = \"continuum/load.csv\" }, relative to this file, "
+          "in the data set's format and kind (measurement files below; vshell's own outputs are "
+          "read too). Each must span its data set's abscissae (it is interpolated linearly, never "
+          "extrapolated); a data set no source covers is not corrected."));
+  k.back().required = true;
+
+  k.push_back(key(
       "forward", "tolerance", kFloat, "", closed(0, 0.1),
       [] { return float_toml_text(ForwardSettings{}.tolerance); },
       "numerics.tolerance of every forward run during the calibration (finite "
@@ -374,6 +401,17 @@ const std::vector<SectionSpec>& calibration_sections() {
        "each alternative from the identified values, and the report gives, beside each "
        "statistical interval, the model-form range: the smallest and largest value over the "
        "main fit and the alternatives."},
+      {"discrepancy", "[[discrepancy]]",
+       "Model-discrepancy correction: curves of a higher-fidelity reference model (a continuum "
+       "FE run of the same test, ...) computed at known parameters, one table per reference. "
+       "Before the fit the forward model is run at each reference's parameters; at every point "
+       "of each data set a reference covers, reference - forward is the correction, and the "
+       "fit compares the data with forward + correction (the mean over the references that "
+       "cover the data set). It removes the forward model's model-form error to the extent "
+       "that this error does not change with the parameters: with two or more references each "
+       "alone is refitted as a model-form alternative, so the range shows how far that "
+       "assumption moves the fit. The report gives each correction's size per data set, and "
+       "fit_<name>.csv its value per point (experiments/08_continuum_reference, section 13)."},
       {"output", "[output]", "The report folder."},
   };
   return sections;

@@ -70,30 +70,6 @@ std::string axis_label(MeasurementKind kind, bool ordinate) {
   return "";
 }
 
-std::string fit_csv(const DataSetFit& fit) {
-  std::string text = fmt::format("# data set: {} ({})\n", fit.name, to_string(fit.kind));
-  if (is_strain_profile(fit.kind)) {
-    text += fmt::format("# punch travel: {} mm\n", format_number(fit.travel_mm));
-  }
-  if (fit.kind == MeasurementKind::kCupHeightProfile) {
-    text += "# final rim profile of the run, interpolated periodically at the measured angles\n";
-    if (fit.shape_only) {
-      text +=
-          fmt::format("# shape only: simulated heights shifted by the best constant offset {} mm\n",
-                      format_number(fit.shape_offset_mm));
-    }
-  }
-  const std::string y = ordinate_name(fit.kind);
-  text +=
-      fmt::format("{},{}_measured,{}_simulated,weight,residual\n", abscissa_name(fit.kind), y, y);
-  for (std::size_t i = 0; i < fit.x.size(); ++i) {
-    text += fmt::format("{},{},{},{},{}\n", format_number(fit.x[i]), format_number(fit.measured[i]),
-                        format_number(fit.simulated[i]), format_number(fit.weight[i]),
-                        format_number(fit.weight[i] * (fit.simulated[i] - fit.measured[i])));
-  }
-  return text;
-}
-
 SvgFigure fit_figure(const DataSetFit& fit) {
   SvgFigure figure;
   figure.title = !is_strain_profile(fit.kind)
@@ -125,6 +101,35 @@ SvgFigure cost_figure(const CalibrationResult& result) {
 }
 
 }  // namespace
+
+std::string fit_csv(const DataSetFit& fit) {
+  std::string text = fmt::format("# data set: {} ({})\n", fit.name, to_string(fit.kind));
+  if (is_strain_profile(fit.kind)) {
+    text += fmt::format("# punch travel: {} mm\n", format_number(fit.travel_mm));
+  }
+  if (fit.kind == MeasurementKind::kCupHeightProfile) {
+    text += "# final rim profile of the run, interpolated periodically at the measured angles\n";
+    if (fit.shape_only) {
+      text +=
+          fmt::format("# shape only: simulated heights shifted by the best constant offset {} mm\n",
+                      format_number(fit.shape_offset_mm));
+    }
+  }
+  const bool corrected = !fit.correction.empty();
+  if (corrected) {
+    text += "# simulated includes the discrepancy correction (column discrepancy_correction)\n";
+  }
+  const std::string y = ordinate_name(fit.kind);
+  text += fmt::format("{},{}_measured,{}_simulated,weight,residual{}\n", abscissa_name(fit.kind), y,
+                      y, corrected ? ",discrepancy_correction" : "");
+  for (std::size_t i = 0; i < fit.x.size(); ++i) {
+    text += fmt::format("{},{},{},{},{}", format_number(fit.x[i]), format_number(fit.measured[i]),
+                        format_number(fit.simulated[i]), format_number(fit.weight[i]),
+                        format_number(fit.weight[i] * (fit.simulated[i] - fit.measured[i])));
+    text += corrected ? fmt::format(",{}\n", format_number(fit.correction[i])) : "\n";
+  }
+  return text;
+}
 
 std::string calibration_json(const CalibrationResult& result, const CalibrationConfig& config) {
   ordered_json j;
@@ -305,6 +310,27 @@ std::string calibration_json(const CalibrationResult& result, const CalibrationC
       forms.push_back(entry);
     }
     j["model_form"] = {{"fits", forms}, {"forward_runs", result.model_form_forward_runs}};
+  }
+  if (!result.discrepancies.empty()) {
+    ordered_json sources = ordered_json::array();
+    for (const auto& source : result.discrepancies) {
+      ordered_json curves = ordered_json::array();
+      for (const auto& c : source.curves) {
+        curves.push_back({{"data", c.data},
+                          {"file", c.file},
+                          {"unit", c.unit},
+                          {"rms_correction", c.rms},
+                          {"max_abs_correction", c.max_abs}});
+      }
+      ordered_json entry = {
+          {"name", source.name}, {"scene_edits", source.edits}, {"ok", source.ok}};
+      if (!source.ok) entry["message"] = source.message;
+      entry["data_sets"] = curves;
+      sources.push_back(entry);
+    }
+    j["discrepancy"] = {{"sources", sources},
+                        {"combined_as", "mean over the sources that cover a data set"},
+                        {"forward_runs", result.discrepancy_forward_runs}};
   }
   j["forward_warnings"] = result.forward_warnings;
   j["notes"] = result.report_notes;

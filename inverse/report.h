@@ -25,6 +25,9 @@ std::vector<std::string> write_calibration_report(const CalibrationResult& resul
 // The JSON report as text (also used by tests).
 std::string calibration_json(const CalibrationResult& result, const CalibrationConfig& config);
 
+// fit_<name>.csv of one data set as text.
+std::string fit_csv(const DataSetFit& fit);
+
 // evaluations.csv as text.
 std::string evaluations_csv(const CalibrationResult& result);
 

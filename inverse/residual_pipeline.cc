@@ -8,10 +8,8 @@
 #include "cup_height_curve.h"
 
 namespace vs {
-namespace {
 
-// Linear interpolation in a strictly increasing table; constant beyond the ends.
-double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
+double interpolate_table(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
   if (x <= xs.front()) return ys.front();
   if (x >= xs.back()) return ys.back();
   const auto upper = std::upper_bound(xs.begin(), xs.end(), x);
@@ -19,6 +17,8 @@ double interpolate(const std::vector<double>& xs, const std::vector<double>& ys,
   const double t = (x - xs[i - 1]) / (xs[i] - xs[i - 1]);
   return ys[i - 1] + t * (ys[i] - ys[i - 1]);
 }
+
+namespace {
 
 bool same_travel(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, b); }
 
@@ -39,7 +39,7 @@ SimulatedCurve load_curve(const Measurement& m, const RunResult& run) {
                     travel.back(), needed);
     return curve;
   }
-  for (double x : m.x) curve.y.push_back(interpolate(travel, force, x));
+  for (double x : m.x) curve.y.push_back(interpolate_table(travel, force, x));
   curve.ok = true;
   return curve;
 }
@@ -64,7 +64,7 @@ SimulatedCurve profile_curve(const Measurement& m, const RunResult& run) {
         fmt::format("{}: profile at {} mm has inconsistent columns", m.name, m.travel_mm);
     return curve;
   }
-  for (double x : m.x) curve.y.push_back(interpolate(profile->r0_mm, eps, x));
+  for (double x : m.x) curve.y.push_back(interpolate_table(profile->r0_mm, eps, x));
   curve.ok = true;
   return curve;
 }
@@ -97,6 +97,9 @@ SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& r
 
 SimulatedCurve data_set_curve(const DataSet& d, const RunResult& run) {
   SimulatedCurve curve = simulate_curve(d.measurement, run, d.scene_spec.get());
+  if (curve.ok && !d.correction.empty()) {
+    for (std::size_t i = 0; i < curve.y.size(); ++i) curve.y[i] += d.correction[i];
+  }
   if (curve.ok && d.shape_only) {
     const double c = shape_offset(curve.y, d.measurement.y, d.weights);
     for (double& y : curve.y) y += c;

@@ -26,7 +26,13 @@ struct DataSet {
   // cup_height_profile: compare the shape only, up to the best constant offset
   // (cup_height_curve.h).
   bool shape_only = false;
+  // Model-discrepancy correction (discrepancy.h), one per point, added to the simulated values
+  // before anything else; empty: none.
+  std::vector<double> correction;
 };
+
+// Linear interpolation in a strictly increasing table; constant beyond the ends.
+double interpolate_table(const std::vector<double>& xs, const std::vector<double>& ys, double x);
 
 // Simulated values at a data set's abscissae, or why there are none.
 struct SimulatedCurve {
@@ -44,8 +50,9 @@ struct SimulatedCurve {
 SimulatedCurve simulate_curve(const Measurement& measurement, const RunResult& run,
                               const Scene* scene = nullptr);
 
-// A data set's simulated values as compared: simulate_curve, shifted by the shape-only offset
-// when the data set asks for it (the values the residuals and fit_<name>.csv use).
+// A data set's simulated values as compared: simulate_curve, plus the data set's discrepancy
+// correction, shifted by the shape-only offset when the data set asks for it (the values the
+// residuals and fit_<name>.csv use).
 SimulatedCurve data_set_curve(const DataSet& data_set, const RunResult& run);
 
 struct Residuals {

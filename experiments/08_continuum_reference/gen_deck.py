@@ -198,6 +198,10 @@ def write_deck(a, out):
         sc["thickness"] = a.thickness
     if a.E is not None:
         sc["E"] = a.E
+    if a.K is not None:
+        sc["K"] = a.K
+    if a.n is not None:
+        sc["n"] = a.n
     h0, Rb = sc["thickness"], sc["blank_radius"]
     die_mu = sc["die_friction"] if a.die_friction is None else a.die_friction
     travels = [x for x in sc["travels"] if x <= a.travel + 1e-9]
@@ -364,6 +368,8 @@ def main():
     p.add_argument("--element", default="CAX8R", choices=["CAX8R", "CAX8"])
     p.add_argument("--thickness", type=float, default=None, help="override the sheet thickness [mm]")
     p.add_argument("--E", type=float, default=None, help="override Young's modulus [MPa]")
+    p.add_argument("--K", type=float, default=None, help="override the Swift K [MPa]")
+    p.add_argument("--n", type=float, default=None, help="override the Swift exponent n")
     p.add_argument("--travel", type=float, default=30.0, help="final punch travel [mm]")
     p.add_argument("--tool-element-mm", type=float, default=0.5, help="tool surface element length")
     p.add_argument("--axis-face-mm", type=float, default=0.01,

@@ -73,12 +73,6 @@ CalibrationConfig stretching_config(const fs::path& dir, const Truth& truth, dou
   return config;
 }
 
-CalibrationOptions quiet() {
-  CalibrationOptions options;
-  options.write_report = false;
-  return options;
-}
-
 void expect_recovered(const CalibrationResult& result, const Truth& truth, double tolerance) {
   const Eigen::VectorXd x = result.free_values();
   const double expected[] = {truth.friction, truth.K_MPa, truth.n, truth.r_value};

@@ -107,6 +107,11 @@ lack_of_fit_min_resolutions = 20
 name = "fine mesh"
 set = { "blank.elements" = 40 }
 drop_data = ["thick"]
+discrepancy = ["continuum"]
+[[discrepancy]]
+name = "continuum"
+set = { "tool.punch.friction" = 0.1 }
+files = { load = "load.csv" }
 [forward]
 tolerance = 1e-8
 [forward.set]
@@ -137,6 +142,9 @@ plots = false
   EXPECT_EQ(c.optimizer.global.surface_rounds, 2);
   EXPECT_EQ(c.optimizer.global.grid_half_width, 0.5);
   EXPECT_EQ(c.model_forms.size(), 1u);
+  EXPECT_EQ(c.model_forms[0].discrepancy, std::vector<std::string>{"continuum"});
+  ASSERT_EQ(c.discrepancies.size(), 1u);
+  EXPECT_EQ(c.discrepancies[0].references.size(), 1u);
 }
 
 TEST(CalibrationReference, DefaultsInTheDocsAreTheReadersDefaults) {

@@ -357,12 +357,6 @@ CupTwin cup_twin(double offset_mm, bool shape_only, bool fit_r0) {
   return t;
 }
 
-CalibrationOptions quiet() {
-  CalibrationOptions options;
-  options.write_report = false;
-  return options;
-}
-
 TEST(CupHeightProfileCalibration, RecoversTheThreeRValuesFromAbsoluteHeights) {
   const CupTwin t = cup_twin(0.0, false, true);
   const CalibrationResult result = calibrate(t.config, quiet(), CupFake{});

@@ -147,12 +147,6 @@ CalibrationConfig linear_config(const fs::path& dir, const Measurement& m, doubl
   return config;
 }
 
-CalibrationOptions quiet() {
-  CalibrationOptions options;
-  options.write_report = false;
-  return options;
-}
-
 TEST(LackOfFitFit, FiresOnBiasedModelDataAndStaysQuietOnSynthetic) {
   const fs::path dir = scratch_dir();
   const double sigma = 20.0;
@@ -389,8 +383,8 @@ CalibrationConfig friction_from_thickness_config() {
 // the identified friction a little: the range must contain the main fit and the alternative.
 TEST(ModelForm, RangeOverTheAlternatives) {
   CalibrationConfig config = friction_from_thickness_config();
-  config.model_forms = {{"coarse mesh", {{"blank.elements", "8"}}, "test", {}},
-                        {"same mesh", {{"blank.elements", "40"}}, "test", {}}};
+  config.model_forms = {{"coarse mesh", {{"blank.elements", "8"}}, "test", {}, std::nullopt},
+                        {"same mesh", {{"blank.elements", "40"}}, "test", {}, std::nullopt}};
   const auto result = calibrate(config, quiet(), StretchingFake{});
   ASSERT_EQ(result.model_form.size(), 2u);
   ASSERT_EQ(result.model_form_ranges.size(), 1u);
@@ -426,7 +420,7 @@ struct WarningStretchingFake {
 // model-form fit carries its own (here only the fine mesh's runs warn about the element length).
 TEST(ForwardWarnings, TheReportRepeatsTheWarningsOfTheIdentifiedRunAndOfEachModelForm) {
   CalibrationConfig config = friction_from_thickness_config();
-  config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test", {}}};
+  config.model_forms = {{"fine mesh", {{"blank.elements", "60"}}, "test", {}, std::nullopt}};
   std::vector<std::string> lines;
   CalibrationOptions options = quiet();
   options.progress = [&lines](const std::string& line) { lines.push_back(line); };
@@ -476,7 +470,7 @@ TEST(ModelForm, DropDataRefitsWithoutTheNamedDataSets) {
   config.data.push_back(data_set(load[0], 50.0));
   CalibrationConfig profile_only = config;
   profile_only.data.pop_back();
-  config.model_forms = {{"profile only", {}, "test", {"load"}}};
+  config.model_forms = {{"profile only", {}, "test", {"load"}, std::nullopt}};
   const auto result = calibrate(config, quiet(), StretchingFake{});
   const auto direct = calibrate(profile_only, quiet(), StretchingFake{});
   ASSERT_EQ(result.model_form.size(), 1u);
@@ -498,7 +492,7 @@ TEST(ModelForm, DropDataRefitsWithoutTheNamedDataSets) {
   counting.calls = &calls;
   const auto error = [&](std::vector<std::string> drop) {
     CalibrationConfig bad = config;
-    bad.model_forms = {{"bad", {}, "cal.toml:9", std::move(drop)}};
+    bad.model_forms = {{"bad", {}, "cal.toml:9", std::move(drop), std::nullopt}};
     try {
       calibrate(bad, quiet(), counting);
     } catch (const InputError& e) {
@@ -513,14 +507,16 @@ TEST(ModelForm, DropDataRefitsWithoutTheNamedDataSets) {
                 .find("cal.toml:9: model_form 'bad': the data it keeps "
                       "(0 points) cannot determine 1 free parameters"),
             std::string::npos);
-  EXPECT_NE(error({}).find("has no scene edits (set) and drops no data"), std::string::npos);
+  EXPECT_NE(error({}).find("has no scene edits (set), drops no data and keeps every discrepancy "
+                           "source"),
+            std::string::npos);
   EXPECT_EQ(calls.load(), 0);
 }
 
 TEST(ModelForm, BadSceneEditIsAnInputErrorBeforeAnyRun) {
   const fs::path dir = scratch_dir();
   CalibrationConfig config = linear_config(dir, linear_data(480.0, 0.15, 0.0, 20.0, 7), 20.0);
-  config.model_forms = {{"bad", {{"blank.elements", "-3"}}, "cal.toml:12", {}}};
+  config.model_forms = {{"bad", {{"blank.elements", "-3"}}, "cal.toml:12", {}, std::nullopt}};
   std::atomic<int> calls{0};
   StretchingFake fake;
   fake.calls = &calls;

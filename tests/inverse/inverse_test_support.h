@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "calibrate.h"
 #include "calibration_config.h"
 #include "forward_model.h"
 #include "run/run_result.h"
@@ -162,6 +163,13 @@ struct LinearFake {
     return run;
   }
 };
+
+// Calibration options for tests: no report folder, no progress.
+inline CalibrationOptions quiet() {
+  CalibrationOptions options;
+  options.write_report = false;
+  return options;
+}
 
 inline ParameterSpec param(const std::string& address, double initial, double lower, double upper,
                            double scale, bool fixed = false) {

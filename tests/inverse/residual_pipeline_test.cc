@@ -27,7 +27,7 @@ TEST(ResidualPipeline, InterpolatesLoadFromTheOriginAndWeights) {
   m.kind = MeasurementKind::kLoadTravel;
   m.x = {0.5, 2.5, 4.0};
   m.y = {0.0, 600.0, 1600.0};
-  ResidualPipeline pipeline({{m, 0, {0.1, 0.1, 1.0}, nullptr, false}});
+  ResidualPipeline pipeline({{m, 0, {0.1, 0.1, 1.0}, nullptr, false, {}}});
   const auto r = pipeline.residuals({ramp_run(4.0)});
   ASSERT_TRUE(r.ok);
   EXPECT_DOUBLE_EQ(r.values[0], 0.1 * 50.0);  // between (0,0) and (1,100)
@@ -41,7 +41,7 @@ TEST(ResidualPipeline, RunStoppingBeforeTheDataFails) {
   m.kind = MeasurementKind::kLoadTravel;
   m.x = {1.0, 6.0};
   m.y = {1.0, 2.0};
-  ResidualPipeline pipeline({{m, 0, {1.0, 1.0}, nullptr, false}});
+  ResidualPipeline pipeline({{m, 0, {1.0, 1.0}, nullptr, false, {}}});
   const auto r = pipeline.residuals({ramp_run(5.0)});
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.message.find("stopped at 5 mm"), std::string::npos) << r.message;
@@ -53,7 +53,7 @@ TEST(ResidualPipeline, ProfilesAtTheirTravelWithEndValuesOutside) {
   m.travel_mm = 5.0;
   m.x = {0.0, 2.0, 6.0};
   m.y = {0.0, 0.0, 0.0};
-  ResidualPipeline pipeline({{m, 0, {1.0, 1.0, 1.0}, nullptr, false}});
+  ResidualPipeline pipeline({{m, 0, {1.0, 1.0, 1.0}, nullptr, false, {}}});
   const auto r = pipeline.residuals({ramp_run(5.0)});
   ASSERT_TRUE(r.ok);
   EXPECT_DOUBLE_EQ(r.values[0], -0.1);
@@ -61,7 +61,7 @@ TEST(ResidualPipeline, ProfilesAtTheirTravelWithEndValuesOutside) {
   EXPECT_DOUBLE_EQ(r.values[2], -0.2);
 
   m.travel_mm = 4.0;  // no profile there
-  ResidualPipeline missing({{m, 0, {1.0, 1.0, 1.0}, nullptr, false}});
+  ResidualPipeline missing({{m, 0, {1.0, 1.0, 1.0}, nullptr, false, {}}});
   EXPECT_FALSE(missing.residuals({ramp_run(5.0)}).ok);
 }
 

@@ -5,7 +5,8 @@
 // profile at 25 mm and the load curve must end with the profile's misfit called STRUCTURAL,
 // while the same fit on the shell's own curves (synthetic, noise-free) calls nothing structural.
 // Coarse mesh (24 elements) and at most a few iterations: a few seconds. And the committed
-// section-10 calibration config reproduces the fit its README documents.
+// section-10 calibration config reproduces the fit its README documents, and its
+// discrepancy-corrected twin (section 13) the friction within 5 %.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -119,16 +120,11 @@ CalibrationConfig config_for(const std::vector<Measurement>& data) {
   return c;
 }
 
-CalibrationOptions quiet() {
-  CalibrationOptions o;
-  o.write_report = false;
-  return o;
-}
-
 // The committed section-10 config (experiments/08_continuum_reference/calibration: load from
 // 10 mm, thickness at 15 and 25 mm, normal-stress term and elastic correction on, 40 elements,
 // with its four model-form refits; about 3 s): the figures its README documents. K and n within
-// 1 % of the truth (the goal, met); friction -14.8 % (the goal, 5 %, is not met), outside
+// 1 % of the truth (the goal, met); friction -14.8 % (uncorrected: the next test's
+// discrepancy correction meets the goal, 5 %), outside
 // its statistical interval but the model-form range [0.0752, 0.0884] beside it, every data set's
 // misfit structural, and no forward warning at 40 elements.
 TEST(CalibrationContinuum, CommittedConfigReproducesItsDocumentedFit) {
@@ -136,7 +132,7 @@ TEST(CalibrationContinuum, CommittedConfigReproducesItsDocumentedFit) {
                            "/experiments/08_continuum_reference/calibration/"
                            "calibrate_ex1_mu010_contact_elastic_from10.toml";
   const auto result =
-      calibrate(load_calibration_config(path), quiet(), make_default_forward_model());
+      calibrate(load_calibration_config(path), vs::testing::quiet(), make_default_forward_model());
   ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
   const Eigen::VectorXd v = result.free_values();
   EXPECT_NEAR(v[0], 0.0852, 0.0005);              // friction (truth 0.1)
@@ -154,9 +150,37 @@ TEST(CalibrationContinuum, CommittedConfigReproducesItsDocumentedFit) {
   EXPECT_TRUE(result.forward_warnings.empty());
 }
 
+// The same calibration corrected by two continuum references computed at parameters that are not
+// the data's (K 530 MPa, n 0.19, friction 0 and 0.3; experiments/08_continuum_reference section
+// 13; about 10 s with its six model-form refits): friction within the 5 % of the truth,
+// K and n within 1 %, and the truth inside the model-form range, which now includes each
+// reference alone.
+TEST(CalibrationContinuum, DiscrepancyCorrectedConfigMeetsTheFrictionGoal) {
+  const std::string path = std::string(VS_SOURCE_DIR) +
+                           "/experiments/08_continuum_reference/calibration/"
+                           "calibrate_ex1_mu010_discrepancy.toml";
+  const auto result =
+      calibrate(load_calibration_config(path), vs::testing::quiet(), make_default_forward_model());
+  ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
+  ASSERT_EQ(result.discrepancies.size(), 2u);
+  for (const auto& source : result.discrepancies) {
+    ASSERT_TRUE(source.ok) << source.message;
+    EXPECT_EQ(source.curves.size(), 3u) << source.name;
+  }
+  const Eigen::VectorXd v = result.free_values();
+  EXPECT_NEAR(v[0], 0.1005, 0.0005);              // friction (truth 0.1): within 1 %
+  EXPECT_LT(std::abs(v[1] / 589.0 - 1.0), 0.01);  // K
+  EXPECT_LT(std::abs(v[2] / 0.216 - 1.0), 0.01);  // n
+  ASSERT_EQ(result.model_form.size(), 6u);        // the config's four and each reference alone
+  ASSERT_EQ(result.model_form_ranges.size(), 3u);
+  EXPECT_LT(result.model_form_ranges[0].lower, 0.1);
+  EXPECT_GT(result.model_form_ranges[0].upper, 0.1);
+  EXPECT_TRUE(result.forward_warnings.empty());
+}
+
 TEST(CalibrationContinuum, LackOfFitFiresOnTheContinuumProfile) {
   const auto result =
-      calibrate(config_for(continuum_data()), quiet(), make_default_forward_model());
+      calibrate(config_for(continuum_data()), vs::testing::quiet(), make_default_forward_model());
   fmt::print("{}", result.brief_report());
   ASSERT_EQ(result.fits.size(), 2u);
   for (const auto& fit : result.fits) fmt::print("  {}\n", fit.lack_of_fit.text);
@@ -184,7 +208,7 @@ TEST(CalibrationContinuum, LackOfFitQuietOnTheShellsOwnCurves) {
       1);
   CalibrationConfig config = config_for(data);
   config.parameters[0].initial = 0.09;  // a little off, so that the fit has work to do
-  const auto result = calibrate(config, quiet(), make_default_forward_model());
+  const auto result = calibrate(config, vs::testing::quiet(), make_default_forward_model());
   fmt::print("{}", result.brief_report());
   for (const auto& fit : result.fits) {
     EXPECT_NE(fit.lack_of_fit.verdict, LackOfFitVerdict::kStructural) << fit.lack_of_fit.text;
@@ -216,7 +240,7 @@ TEST(CalibrationContinuum, DISABLED_FrictionFreeContinuumAtTheBound) {
       c.optimizer.noise_floor_factor = 0.0;
       c.optimizer.least_squares.active_set = false;
     }
-    const auto result = calibrate(c, quiet(), make_default_forward_model());
+    const auto result = calibrate(c, vs::testing::quiet(), make_default_forward_model());
     fmt::print("{}: {}", plain ? "plain Ceres" : "defaults", result.brief_report());
     EXPECT_NE(result.termination, CalibrationTermination::kFailed);
   }
