@@ -80,7 +80,8 @@ SvgFigure fit_figure(const DataSetFit& fit) {
   figure.x_label = axis_label(fit.kind, false);
   figure.y_label = axis_label(fit.kind, true);
   PlotSeries measured{"measured", fit.x, fit.measured, SeriesStyle::kMarkers};
-  PlotSeries fitted{"fitted", fit.x, fit.simulated, SeriesStyle::kLine};
+  PlotSeries fitted{fit.correction.empty() ? "fitted" : "fitted, with the discrepancy correction",
+                    fit.x, fit.simulated, SeriesStyle::kLine};
   figure.series = {measured, fitted};
   return figure;
 }
