@@ -222,6 +222,71 @@ TEST_F(CalibrationFuzz, DeepNestingIsAnErrorNamingTheLine) {
   }
 }
 
+constexpr const char* kDiscrepancy = R"([[discrepancy]]
+name = "continuum"
+set = { "tool.punch.friction" = 0.0, "material.hardening.K_MPa" = 450.0, "blank.elements" = 30 }
+files = { load = "ref_load.csv", thick = "ref_thick.csv" }
+[[model_form]]
+name = "uncorrected"
+discrepancy = []
+)";
+
+void write_references(const fs::path& dir) {
+  write_file(dir / "ref_load.csv",
+             "# source: test\n# units: mm, N\npunch_travel_mm,punch_force_N\n0,0\n4,420\n");
+  write_file(dir / "ref_thick.csv",
+             "# source: test\n# units: mm, 1\nr0_mm,eps_thickness\n0,-0.12\n25,-0.2\n");
+}
+
+// A reference run that fails: the calibration stops before the fit, with the reason, and its
+// report has no NaN or null.
+TEST_F(CalibrationFuzz, AFailedReferenceRunStopsWithACleanReport) {
+  write_references(dir_);
+  write_file(dir_ / "calibrate.toml",
+             replaced(std::string(kConfig) + kDiscrepancy, "\"tool.punch.friction\" = 0.0",
+                      "\"tool.punch.friction\" = 0.4"));
+  const CalibrationConfig config = load_calibration_config((dir_ / "calibrate.toml").string());
+  CalibrationOptions options;
+  options.output_directory = (dir_ / "out").string();
+  StretchingFake fake;
+  fake.fail_above_friction = 0.3;
+  const CalibrationResult result = calibrate(config, options, fake);
+  EXPECT_EQ(result.termination, CalibrationTermination::kFailed);
+  EXPECT_TRUE(result.evaluations.empty());
+  EXPECT_EQ(result.message,
+            "discrepancy 'continuum': the forward run at its parameters gives no curve for load: "
+            "fake: no convergence at high friction");
+  EXPECT_EQ(result.brief_report().find("nan"), std::string::npos) << result.brief_report();
+  std::ifstream json_in(dir_ / "out" / "calibration.json");
+  std::stringstream json;
+  json << json_in.rdbuf();
+  EXPECT_EQ(json.str().find(": null"), std::string::npos) << json.str();
+  EXPECT_EQ(json.str().find("nan"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"termination\": \"failed\""), std::string::npos);
+  EXPECT_NE(json.str().find("\"ok\": false"), std::string::npos) << json.str();
+}
+
+TEST_F(CalibrationFuzz, MutatedDiscrepancyConfigsLoadOrGiveOneLine) {
+  write_references(dir_);
+  const std::string config = std::string(kConfig) + kDiscrepancy;
+  ASSERT_EQ(outcome(config), "ok");
+  std::mt19937 rng(23);
+  const auto start = std::chrono::steady_clock::now();
+  int cases = 0, errors = 0;
+  while (cases < 1000 &&
+         std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1500)) {
+    const std::string text = mutate_toml(config, rng);
+    ++cases;
+    const std::string message = outcome(text);
+    if (message == "ok") continue;
+    ++errors;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "case " << cases << ": " << message;
+    EXPECT_LT(message.size(), 600u) << "case " << cases << ": " << message;
+  }
+  EXPECT_GT(cases, 30);
+  EXPECT_GT(errors, cases / 4);
+}
+
 TEST_F(CalibrationFuzz, MutatedConfigsLoadOrGiveOneLine) {
   std::mt19937 rng(17);
   const auto start = std::chrono::steady_clock::now();
