@@ -418,6 +418,9 @@ CalibrationConfig model_form_config(const CalibrationConfig& config, const Model
   c.optimizer.method = OptimizerMethod::kLevenbergMarquardt;
   for (const auto& edit : form.overrides) c.forward.overrides.push_back(edit);
   std::erase_if(c.data, [&form](const DataSpec& d) { return form.drops(d.measurement.name); });
+  for (DiscrepancySpec& source : c.discrepancies) {
+    std::erase_if(source.references, [&form](const auto& r) { return form.drops(r.first); });
+  }
   for (std::size_t i = 0; i < c.parameters.size() && i < identified.size(); ++i) {
     c.parameters[i].initial = identified[i].value;
   }
@@ -758,8 +761,17 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       fit.name = form.name;
       fit.edits = edits_text(form);
       fit.dropped_data = form.drop_data;
-      const CalibrationResult alternative = calibrate(
-          model_form_config(config, form, result.parameters), quiet, model_for_alternatives);
+      CalibrationResult alternative;
+      try {
+        alternative = calibrate(model_form_config(config, form, result.parameters), quiet,
+                                model_for_alternatives);
+      } catch (const std::exception& e) {
+        // Checked before the main fit; should a refit still refuse its input, the main fit and
+        // the other alternatives are kept and this one says why.
+        alternative.termination = CalibrationTermination::kFailed;
+        alternative.message = e.what();
+        alternative.final_cost = kNaN;
+      }
       fit.termination = to_string(alternative.termination);
       fit.message = alternative.message;
       fit.final_cost = alternative.final_cost;

@@ -129,6 +129,34 @@ TEST(Discrepancy, RemovesAModelFormErrorThatDoesNotDependOnTheParameters) {
   EXPECT_NEAR(with_plain.model_form[0].values.at(0), plain.free_values()[0], 1e-6);
 }
 
+// An alternative that drops a data set a reference covers: the refit leaves that reference's
+// curve out too (it used to stop the whole calibration with an input error after the main fit).
+TEST(Discrepancy, DroppedDataSetsLeaveTheirReferencesOut) {
+  Case c = friction_case(0.0);
+  std::vector<double> travels;
+  for (int i = 1; i <= 25; ++i) travels.push_back(i);
+  auto load_at = [&](double friction) {
+    Scene scene = c.scene;
+    for (auto& tool : scene.tools) {
+      if (tool.name == "punch") tool.friction = friction;
+    }
+    return make_synthetic_measurements(scene, StretchingFake{}(scene),
+                                       {{MeasurementKind::kLoadTravel, "load", 0.0, travels}}, 1)
+        .at(0);
+  };
+  c.config.data.push_back(data_set(load_at(0.1), 50.0));
+  DiscrepancySpec s = source(c, "ref", 0.0, 0.0);
+  s.references.emplace_back("load", load_at(0.0));
+  c.config.discrepancies = {s};
+  c.config.model_forms = {{"without the load", {}, "test", {"load"}, std::nullopt}};
+  const auto result = calibrate(c.config, quiet(), StretchingFake{});
+  ASSERT_EQ(result.termination, CalibrationTermination::kConverged) << result.message;
+  ASSERT_EQ(result.discrepancies.at(0).curves.size(), 2u);
+  ASSERT_EQ(result.model_form.size(), 1u);
+  EXPECT_EQ(result.model_form[0].termination, "converged") << result.model_form[0].message;
+  EXPECT_NEAR(result.model_form[0].values.at(0), 0.1, 1e-5);
+}
+
 // An error that grows with friction: references at 0 and 0.3 bracket the data's (0.1), the mean
 // leaves a small bias, and the range over the references alone contains the truth.
 TEST(Discrepancy, ParameterDependentErrorShowsInTheModelFormRange) {
