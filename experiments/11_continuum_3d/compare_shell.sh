@@ -11,7 +11,7 @@ root=$(cd "$here/../.." && pwd)
 vshell=${1:-$root/build/app/vshell}
 scene=$root/data/scenes/ex4b_square_clamped.toml
 tmp=${TMPDIR:-/tmp}/vshell_ex4b_$$
-common=(--set numerics.time_integration=implicit --set numerics.max_travel_increment_per_length=0.25
+common=(--set numerics.time_integration=implicit --set numerics.start_refinement=0 --set numerics.max_travel_increment_per_length=0.25
         --set numerics.contact_events=false)
 elastic=(--set material.elastic.law=isotropic --set material.elastic.E_MPa=210000
          --set material.elastic.nu=0.3)

@@ -14,7 +14,7 @@ ref=$here/results/${2:-ex4b_n16_l3_k5e4_mu3}
 scene=$root/data/scenes/ex4b_square_clamped.toml
 tmp=${TMPDIR:-/tmp}/vshell_ex4b_early_$$
 travels="[0.5,1,2,3,5,10,15,20]"
-common=(--set blank.divisions=16 --set numerics.time_integration=implicit
+common=(--set blank.divisions=16 --set numerics.time_integration=implicit --set numerics.start_refinement=0
         --set numerics.contact_events=false --set "process.output_travels_mm=$travels")
 elastic=(--set material.elastic.law=isotropic --set material.elastic.E_MPa=210000
          --set material.elastic.nu=0.3)

@@ -36,18 +36,23 @@ void check_geometry_keys(const toml::table& table, const Scene& scene, const std
   }
 }
 
-// Defaults that depend on the geometry, for keys the scene file does not set. The implicit
-// geometry update is the axisymmetric default: stable at steps set by accuracy, 5-8x faster than
-// heun at equal answers (experiments/06_step_stability, experiments/01_performance). In 3D it
-// stays heun: on the 0.5 mm grid of ex4a (4 divisions) the implicit step across the first
-// contact events is 2-4 points less accurate in force than heun's (experiments/06, "Implicit at
-// 0.25 as the scene default"). The step cap relative to the element length follows the update:
-// 0.25 implicit (accuracy), 0.025 heun / euler (the explicit update's stability).
+// Defaults that depend on the geometry or the update, for keys the scene file does not set. The
+// implicit geometry update is the default of both geometries: stable at steps set by accuracy,
+// 5-8x faster than heun at equal answers (experiments/06_step_stability,
+// experiments/01_performance, experiments/05_shell3d). In 3D its step across the first contact
+// events on a coarse grid was 2-4 points less accurate in force than heun's (experiments/06,
+// "Implicit at 0.25 as the scene default"), so a shell3d scene refines the start of its step grid
+// (start_refinement = 3: the first grid increments split into 8, 4 and 2 steps; experiments/06,
+// "The implicit update as the 3D default"). The step cap relative to the element length follows the
+// update: 0.25 implicit (accuracy), 0.025 heun / euler (the explicit update's stability).
 void apply_geometry_defaults(const toml::table& table, Scene* scene) {
   NumericsSpec& nu = scene->numerics;
-  if (!table.at_path("numerics.time_integration")) {
-    nu.time_integration = scene->geometry == Geometry::kAxisymmetric ? TimeIntegration::kImplicit
-                                                                     : TimeIntegration::kHeun;
+  if (!table.at_path("numerics.time_integration")) nu.time_integration = TimeIntegration::kImplicit;
+  if (!table.at_path("numerics.start_refinement")) {
+    nu.start_refinement =
+        scene->geometry == Geometry::kShell3d && nu.time_integration == TimeIntegration::kImplicit
+            ? kShell3dImplicitStartRefinement
+            : 0;
   }
   if (!table.at_path("numerics.max_travel_increment_per_length")) {
     nu.max_travel_increment_per_length = nu.time_integration == TimeIntegration::kImplicit

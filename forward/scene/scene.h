@@ -196,13 +196,14 @@ enum class ShellElementRule {
 // The implicit update's default step cap in element lengths (a cap for accuracy: smooth and
 // within 0.2 % in force on ex1; experiments/06_step_stability).
 inline constexpr double kImplicitTravelIncrementPerLength = 0.25;
+// The default start refinement of a shell3d scene with the implicit update (NumericsSpec).
+inline constexpr int kShell3dImplicitStartRefinement = 3;
 
 struct NumericsSpec {
   int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
   SolverKind solver = SolverKind::kNewton;
-  // A scene file without the key gets the default of its geometry (load_scene.cc,
-  // apply_geometry_defaults): implicit for axisymmetric, heun for shell3d. The struct's own
-  // default is the one for scenes built in code.
+  // A scene file without the key gets the implicit update (load_scene.cc,
+  // apply_geometry_defaults). The struct's own default is the one for scenes built in code.
   TimeIntegration time_integration = TimeIntegration::kHeun;
   // Weight of the end-of-step velocity in the implicit update x_{n+1} = x_n + dt ((1 - theta)
   // v_n + theta v_{n+1}): 1/2 trapezoidal (second order), 1 backward Euler (first order, damps
@@ -223,6 +224,11 @@ struct NumericsSpec {
   // the implicit update (kImplicitTravelIncrementPerLength), 0.025 with heun or euler (this
   // default; load_scene.cc, apply_geometry_defaults).
   double max_travel_increment_per_length = 0.025;
+  // Levels of refinement of the start of the step grid: the first L grid increments are split
+  // into 2^L, 2^(L-1), ..., 2 steps (travel_grid.h). A scene file without the key gets 3 for a
+  // shell3d scene with the implicit update (its first contact events on a coarse grid), else 0
+  // (load_scene.cc, apply_geometry_defaults).
+  int start_refinement = 0;
   double max_strain_increment = 0.02;     // cap on effective strain increment per step
   double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius
   double friction_regularisation = 1e-4;  // Coulomb arctan velocity, relative to punch speed

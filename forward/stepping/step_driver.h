@@ -4,8 +4,8 @@
 // travel. Steps end on a fixed travel grid (multiples of the travel cap) and at the output
 // travels, and contact events split grid intervals: the step sequence then moves continuously
 // with the material and friction parameters, which keeps outputs smooth for calibration. The
-// geometry update is implicit (the axisymmetric default; take_implicit_step), Heun (explicit
-// trapezoidal; the shell3d default) or Euler. A failed step is cut back (redone
+// geometry update is implicit (the default; take_implicit_step), Heun (explicit trapezoidal) or
+// Euler. A failed step is cut back (redone
 // with half the step) and retried; a run that cannot go on, or whose step keeps collapsing, or
 // that stalls at one instant, stops with the reason and everything so far.
 //
@@ -81,7 +81,7 @@ class StepDriver {
         std::min(scene.numerics.max_travel_increment_mm,
                  scene.numerics.max_travel_increment_per_length * g_.shortest_element_mm());
     targets_ = travel_grid(scene.process.punch_travel_mm, grid_increment_mm_,
-                           scene.process.output_travels_mm);
+                           scene.process.output_travels_mm, scene.numerics.start_refinement);
     g_.set_grid_increment(grid_increment_mm_);
   }
 

@@ -7,10 +7,17 @@
 namespace vs {
 
 std::vector<double> travel_grid(double total_mm, double increment_mm,
-                                const std::vector<double>& outputs_mm) {
+                                const std::vector<double>& outputs_mm, int start_levels) {
   std::vector<double> targets = outputs_mm;
   for (double tr = increment_mm; tr < total_mm * (1.0 - 1e-12); tr += increment_mm) {
     targets.push_back(tr);
+  }
+  for (int k = 0; k < start_levels; ++k) {
+    const int parts = 1 << (start_levels - k);
+    for (int j = 1; j < parts; ++j) {
+      const double tr = increment_mm * (k + static_cast<double>(j) / parts);
+      if (tr < total_mm * (1.0 - 1e-12)) targets.push_back(tr);
+    }
   }
   targets.push_back(total_mm);
   std::sort(targets.begin(), targets.end());

@@ -64,11 +64,16 @@ TEST(SceneTable, NumericsDefaultsFollowTheGeometryAndTheUpdate) {
       std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml";
   toml::table table3d = read_scene_table(ex4a);
   const Scene shell = scene_from_table(table3d, ex4a, "");
-  EXPECT_EQ(shell.numerics.time_integration, TimeIntegration::kHeun);
-  EXPECT_EQ(shell.numerics.max_travel_increment_per_length, 0.025);
-  set_scene_value_from_text(table3d, "numerics.time_integration", "implicit");
-  const Scene shell_implicit = scene_from_table(table3d, ex4a, "");
-  EXPECT_EQ(shell_implicit.numerics.max_travel_increment_per_length, 0.25);
+  EXPECT_EQ(shell.numerics.time_integration, TimeIntegration::kImplicit);
+  EXPECT_EQ(shell.numerics.max_travel_increment_per_length, 0.25);
+  EXPECT_EQ(shell.numerics.start_refinement, 3);
+  EXPECT_EQ(axi.numerics.start_refinement, 0);
+  set_scene_value_from_text(table3d, "numerics.time_integration", "heun");
+  const Scene shell_heun = scene_from_table(table3d, ex4a, "");
+  EXPECT_EQ(shell_heun.numerics.max_travel_increment_per_length, 0.025);
+  EXPECT_EQ(shell_heun.numerics.start_refinement, 0);
+  set_scene_value_from_text(table3d, "numerics.start_refinement", "2");
+  EXPECT_EQ(scene_from_table(table3d, ex4a, "").numerics.start_refinement, 2);
   // A number read from the table (the calibration's start values) cannot name such a default.
   EXPECT_NE(error_of([] {
               get_scene_number(minimal_table(), "numerics.max_travel_increment_per_length");

