@@ -20,9 +20,8 @@ TEST(TravelGrid, MultiplesOfTheIncrementAndTheOutputs) {
 
 // Levels 3: the first increment in 8 parts, the second in 4, the third in 2, then the plain grid.
 TEST(TravelGrid, StartRefinementGradesTheFirstIncrements) {
-  expect_grid(travel_grid(2.0, 0.5, {}, 3),
-              {0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375, 0.5, 0.625, 0.75, 0.875, 1.0,
-               1.25, 1.5, 2.0});
+  expect_grid(travel_grid(2.0, 0.5, {}, 3), {0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375,
+                                             0.5, 0.625, 0.75, 0.875, 1.0, 1.25, 1.5, 2.0});
   // A run shorter than the graded part keeps only the targets before its end.
   expect_grid(travel_grid(0.2, 0.5, {}, 2), {0.125, 0.2});
 }
