@@ -29,6 +29,10 @@ Scene axisymmetric_twin(const Scene& shell3d_scene, int elements) {
   // compared with the reference at the default cut-off, not with one that shares its error.
   s.numerics.strain_rate_cutoff =
       std::min(s.numerics.strain_rate_cutoff, NumericsSpec{}.strain_rate_cutoff);
+  // And the axisymmetric defaults of the step grid: steps that end at contact events and no
+  // graded start (a 3D scene's defaults are the opposite since 26 Nov 2026; experiments/06).
+  s.numerics.contact_events = true;
+  s.numerics.start_refinement = 0;
   return s;
 }
 
