@@ -78,6 +78,27 @@ class CalibrationFuzz : public ::testing::Test {
     return "ok";
   }
 
+  // Mutations of `config` (seeded, at most max_cases or 1.5 s): each loads and runs or gives one
+  // line; at least min_cases ran and a quarter of them were errors.
+  void expect_mutations_give_one_line(const std::string& config, unsigned seed, int max_cases,
+                                      int min_cases) {
+    std::mt19937 rng(seed);
+    const auto start = std::chrono::steady_clock::now();
+    int cases = 0, errors = 0;
+    while (cases < max_cases &&
+           std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1500)) {
+      const std::string text = mutate_toml(config, rng);
+      ++cases;
+      const std::string message = outcome(text);
+      if (message == "ok") continue;
+      ++errors;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << "case " << cases << ": " << message;
+      EXPECT_LT(message.size(), 600u) << "case " << cases << ": " << message;
+    }
+    EXPECT_GT(cases, min_cases);
+    EXPECT_GT(errors, cases / 4);
+  }
+
   fs::path dir_;
 };
 
@@ -266,43 +287,15 @@ TEST_F(CalibrationFuzz, AFailedReferenceRunStopsWithACleanReport) {
   EXPECT_NE(json.str().find("\"ok\": false"), std::string::npos) << json.str();
 }
 
+TEST_F(CalibrationFuzz, MutatedConfigsLoadOrGiveOneLine) {
+  expect_mutations_give_one_line(kConfig, 17, 2000, 50);
+}
+
 TEST_F(CalibrationFuzz, MutatedDiscrepancyConfigsLoadOrGiveOneLine) {
   write_references(dir_);
   const std::string config = std::string(kConfig) + kDiscrepancy;
   ASSERT_EQ(outcome(config), "ok");
-  std::mt19937 rng(23);
-  const auto start = std::chrono::steady_clock::now();
-  int cases = 0, errors = 0;
-  while (cases < 1000 &&
-         std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1500)) {
-    const std::string text = mutate_toml(config, rng);
-    ++cases;
-    const std::string message = outcome(text);
-    if (message == "ok") continue;
-    ++errors;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "case " << cases << ": " << message;
-    EXPECT_LT(message.size(), 600u) << "case " << cases << ": " << message;
-  }
-  EXPECT_GT(cases, 30);
-  EXPECT_GT(errors, cases / 4);
-}
-
-TEST_F(CalibrationFuzz, MutatedConfigsLoadOrGiveOneLine) {
-  std::mt19937 rng(17);
-  const auto start = std::chrono::steady_clock::now();
-  int cases = 0, errors = 0;
-  while (cases < 2000 &&
-         std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1500)) {
-    const std::string text = mutate_toml(kConfig, rng);
-    ++cases;
-    const std::string message = outcome(text);
-    if (message == "ok") continue;
-    ++errors;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "case " << cases << ": " << message;
-    EXPECT_LT(message.size(), 600u) << "case " << cases << ": " << message;
-  }
-  EXPECT_GT(cases, 50);
-  EXPECT_GT(errors, cases / 4);
+  expect_mutations_give_one_line(config, 23, 1000, 30);
 }
 
 }  // namespace
