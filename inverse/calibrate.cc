@@ -578,9 +578,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       throw InputError(fmt::format("{}: model_form '{}': {}", form.where, form.name, e.what()));
     }
   }
+  // The scenes of each discrepancy source, checked now and run before the fit.
+  std::vector<std::vector<Scene>> source_scenes;
   for (const DiscrepancySpec& source : config.discrepancies) {
     try {
-      discrepancy_scenes(config, source);
+      source_scenes.push_back(discrepancy_scenes(config, source));
     } catch (const InputError& e) {
       throw InputError(
           fmt::format("{}: discrepancy '{}': {}", source.where, source.name, e.what()));
@@ -596,12 +598,11 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   const ForwardModel model_for_alternatives = forms.empty() ? ForwardModel{} : model;
   std::vector<DataSet> data_sets = make_data_sets(config, bindings);
   std::string start_failure;  // a discrepancy source whose forward run failed
-  for (const DiscrepancySpec& source : config.discrepancies) {
-    DiscrepancySource learned;
-    learned.name = source.name;
+  for (std::size_t k = 0; k < config.discrepancies.size(); ++k) {
+    const DiscrepancySpec& source = config.discrepancies[k];
     say(fmt::format("discrepancy '{}': forward run at the reference's parameters", source.name));
     std::vector<RunResult> runs;
-    for (const Scene& scene : discrepancy_scenes(config, source)) {
+    for (const Scene& scene : source_scenes[k]) {
       runs.push_back(run_guarded(model, scene));
       ++result.discrepancy_forward_runs;
     }

@@ -193,6 +193,13 @@ class TableReader {
   std::set<std::string> used_;
 };
 
+// The data set of this name, or null.
+const DataSpec* find_data_set(const std::vector<DataSpec>& data, const std::string& name) {
+  const auto d = std::find_if(data.begin(), data.end(),
+                              [&name](const DataSpec& x) { return x.measurement.name == name; });
+  return d == data.end() ? nullptr : &*d;
+}
+
 std::string resolve(const std::string& base_dir, const std::string& file) {
   const fs::path p(file);
   return (p.is_absolute() ? p : fs::path(base_dir) / p).lexically_normal().string();
@@ -481,9 +488,8 @@ DiscrepancySpec read_discrepancy(const toml::table& t, const std::string& file,
       throw InputError(fmt::format("{}: must be a string (the reference's file), got {}", where,
                                    toml_type_name(node)));
     }
-    const auto d = std::find_if(data.begin(), data.end(),
-                                [&](const DataSpec& x) { return x.measurement.name == data_name; });
-    if (d == data.end()) {
+    const DataSpec* d = find_data_set(data, data_name);
+    if (d == nullptr) {
       std::string known;
       for (const DataSpec& x : data) known += (known.empty() ? "" : ", ") + x.measurement.name;
       throw InputError(fmt::format("{}: '{}' is not a data set of this config (data sets: {})",
@@ -701,9 +707,7 @@ void validate_calibration_config(const CalibrationConfig& config) {
     // The data the alternative drops must exist, and what it keeps still determine the free
     // parameters (free >= 1, so keeping nothing fails too).
     for (const std::string& name : form.drop_data) {
-      const bool known = std::any_of(config.data.begin(), config.data.end(),
-                                     [&](const DataSpec& d) { return d.measurement.name == name; });
-      if (!known) {
+      if (find_data_set(config.data, name) == nullptr) {
         throw InputError(
             fmt::format("{}: model_form '{}': drop_data names '{}', which is not a "
                         "data set of this config",
@@ -754,10 +758,8 @@ void validate_calibration_config(const CalibrationConfig& config) {
     }
     // The reference must span the data it corrects (no extrapolation).
     for (const auto& [data_name, reference] : source.references) {
-      const auto d = std::find_if(config.data.begin(), config.data.end(), [&](const DataSpec& x) {
-        return x.measurement.name == data_name;
-      });
-      if (d == config.data.end()) {
+      const DataSpec* d = find_data_set(config.data, data_name);
+      if (d == nullptr) {
         throw InputError(fmt::format("{}: discrepancy '{}': '{}' is not a data set of this config",
                                      source.where, source.name, data_name));
       }

@@ -27,7 +27,6 @@ Scene quarter_disc(bool elastic) {
   // +2.7 % from the twin at 4 mm with the start (its step error, forming_test.cc).
   s.numerics.time_integration = TimeIntegration::kHeun;
   s.numerics.start_refinement = 0;
-  s.numerics.contact_events = true;
   if (elastic) {
     s.material.elastic.law = ElasticLaw::kIsotropic;
     s.material.elastic.E_MPa = 210000.0;
