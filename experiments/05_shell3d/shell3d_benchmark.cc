@@ -9,7 +9,7 @@
 //                     [--scene FILE] [--csv FILE] [--speed-setting] [--per-length X]
 //                     [--cutoff X] [--implicit] [--no-events] [--krylov-min N] [--goal]
 //                     [--double-preconditioner] [--first-tolerance-factor X]
-//                     [--start-refinement L]
+//                     [--start-refinement L] [--implicit-solves N] [--fine-reference X]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
@@ -19,10 +19,13 @@
 // RunOptions::single_precision_preconditioner = false; --first-tolerance-factor X:
 // StepDriverOptions::implicit_first_tolerance_factor (the implicit update's first solve stops at X
 // times numerics.tolerance); --start-refinement L: numerics.start_refinement (the scene default
-// is 3 for 3D with the implicit update since 26 Nov 2026; figures before that are with 0). --goal:
-// after each
-// run, the issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric
-// solver at every output travel, in under 10 s wall) with the figures it rests on.
+// is 3 for 3D with the implicit update since 26 Nov 2026; figures before that are with 0);
+// --implicit-solves N: numerics.implicit_solves (velocity solves per implicit step, 2 by default);
+// --fine-reference X: each run is also compared with a run of the same 3D mesh at X element lengths
+// per step with contact events and no graded start (its time-stepping error alone, without the
+// mesh's; for X small enough the reference's own error is negligible). --goal: after each run, the
+// issue-3 performance goal (force and thickness strain within 2 % of the axisymmetric solver at
+// every output travel, in under 10 s wall) with the figures it rests on.
 //
 // Report study (experiments/REPORT.md, run by experiments/run_all.sh): with --out DIR and/or
 // --quick it runs the work-precision study of experiments/common/shell3d_study.h instead and
@@ -72,6 +75,47 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
 }
 
+// The punch force of run r at travel t [N] (a step ends there), NaN if none does.
+double force_at_travel(const vs::RunResult& r, double t) {
+  for (const auto& s : r.steps)
+    if (std::abs(s.punch_travel_mm - t) <= 1e-9 * (1.0 + t)) return s.punch_force_N;
+  return std::nan("");
+}
+
+// --fine-reference: the same scene and mesh at `per_length` element lengths per step with contact
+// events and no graded start (the default implicit update otherwise), and the deviation of r from
+// it at every output travel both reached: force, and the largest nodal |d eps_t| = |ln(h / h_ref)|.
+void print_against_fine_reference(vs::Scene scene, const vs::RunResult& r, double per_length) {
+  scene.numerics.time_integration = vs::TimeIntegration::kImplicit;
+  scene.numerics.max_travel_increment_per_length = per_length;
+  scene.numerics.contact_events = true;
+  scene.numerics.start_refinement = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  const vs::RunResult ref = vs::shell3d::simulate_shell3d(scene, vs::RunOptions{});
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::string devs;
+  double last = -1.0;  // the stages end with the final state, often an output travel as well
+  for (const auto& a : r.shell->stages) {
+    if (a.punch_travel_mm == last) continue;
+    last = a.punch_travel_mm;
+    for (const auto& b : ref.shell->stages) {
+      if (std::abs(a.punch_travel_mm - b.punch_travel_mm) > 1e-9 * (1.0 + b.punch_travel_mm))
+        continue;
+      double eps = 0.0;
+      for (std::size_t i = 0; i < a.thickness_mm.size() && i < b.thickness_mm.size(); ++i)
+        eps = std::max(eps, std::abs(std::log(a.thickness_mm[i] / b.thickness_mm[i])));
+      const double f = force_at_travel(r, a.punch_travel_mm);
+      const double fr = force_at_travel(ref, b.punch_travel_mm);
+      devs += fmt::format(" {:g}:{:+.2f}/{:.4f}", a.punch_travel_mm, 100.0 * (f / fr - 1.0), eps);
+      break;
+    }
+  }
+  std::printf(
+      "#   against the same mesh at %g element lengths per step with contact events (%zu steps, "
+      "%.1f s%s), travel_mm:dF%%/max|deps_t|:%s\n",
+      per_length, ref.steps.size(), wall, ref.completed() ? "" : ", FAILED", devs.c_str());
+}
+
 struct Args {
   std::string scene = std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml";
   std::vector<int> divisions = {4, 8, 16};
@@ -92,8 +136,10 @@ struct Args {
   int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
   bool double_preconditioner = false;
   double first_tolerance_factor = vs::StepDriverOptions{}.implicit_first_tolerance_factor;
-  int start_refinement = -1;  // -1: the scene's
-  std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
+  int start_refinement = -1;    // -1: the scene's
+  int implicit_solves = 0;      // 0: the scene's
+  double fine_reference = 0.0;  // > 0: element lengths per step of a same-mesh reference run
+  std::string summarise_dir;    // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
 
@@ -151,6 +197,10 @@ Args parse(int argc, char** argv) {
       a.first_tolerance_factor = std::stod(value);
     } else if (key == "--start-refinement") {
       a.start_refinement = std::stoi(value);
+    } else if (key == "--implicit-solves") {
+      a.implicit_solves = std::stoi(value);
+    } else if (key == "--fine-reference") {
+      a.fine_reference = std::stod(value);
     } else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       std::exit(2);
@@ -301,6 +351,7 @@ int main(int argc, char** argv) {
   if (args.implicit) base.numerics.time_integration = vs::TimeIntegration::kImplicit;
   if (args.no_events) base.numerics.contact_events = false;
   if (args.start_refinement >= 0) base.numerics.start_refinement = args.start_refinement;
+  if (args.implicit_solves > 0) base.numerics.implicit_solves = args.implicit_solves;
   if (!args.friction.empty()) {
     for (auto& t : base.tools) {
       t.friction = args.friction == "sticking" ? std::numeric_limits<double>::infinity()
@@ -381,6 +432,7 @@ int main(int argc, char** argv) {
         std::printf("#   Newton iterations per implicit solve of a step (first, second, ..):%s\n",
                     per_solve.c_str());
       }
+      if (args.fine_reference > 0.0) print_against_fine_reference(scene, r, args.fine_reference);
       if (args.goal) {
         double force = 0.0, mean = 0.0, eps = 0.0, eps_rel = 0.0;
         for (const auto& c : cmp) {

@@ -118,7 +118,7 @@ struct RunResult {
   std::vector<std::string> warnings;  // trust caveats (e.g. elements shorter than the thickness)
   int total_iterations = 0;
   // Implicit update: Newton iterations of the k-th velocity solve of a step (k = 0, 1, ..;
-  // StepDriverOptions::implicit_solves), summed over every step tried (the last contact round of
+  // numerics.implicit_solves), summed over every step tried (the last contact round of
   // each solve). total_iterations counts only the last solve of each accepted step.
   std::vector<int> implicit_solve_iterations;
   int total_cutbacks = 0;

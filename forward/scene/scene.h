@@ -209,6 +209,12 @@ struct NumericsSpec {
   // v_n + theta v_{n+1}): 1/2 trapezoidal (second order), 1 backward Euler (first order, damps
   // the stiffest modes completely).
   double implicit_theta = 0.5;
+  // Implicit update: velocity solves per step, each in the configuration moved with the previous
+  // solve's velocity (the first: with the start velocity). 2: the trapezoidal update of
+  // implicit_theta, second order; 1: the configuration moved with the start velocity and the one
+  // solve's velocity carried into the next step (first order in the geometry, a stiff mode damped
+  // only by |z|^2 = theta a / (1 + theta a), a = its rate times the step; step_driver.h).
+  int implicit_solves = 2;
   // Implicit update: end steps at contact events, as the explicit update must (false: a node that
   // reaches a tool within a step touches it at the end of the step).
   bool contact_events = true;

@@ -201,7 +201,14 @@ bool StepDriver<Stepper>::take_step(const Solved& from, double dt, Solved* to, s
 // K_g of the previous solve's stresses, dt K_g (v - v_k) (the models' GeometryCoupling). K_g holds
 // the stiff mode (the tension against a change of shape), so the iteration converges where the
 // plain fixed point (Heun's corrector) diverges. A fixed number of solves per step
-// (StepDriverOptions::implicit_solves) keeps the step a smooth map of the parameters.
+// (numerics.implicit_solves, 2 by default) keeps the step a smooth map of the parameters.
+// Measured on ex1 (50 elements, 0.25 element lengths per step): a third solve moves the force by
+// <= 0.005 % and the smallest thickness by 4e-5 mm, for 47 % more factorisations.
+// One solve: the configuration is moved with the start velocity v_n and the solve's velocity is
+// carried into the next step. On a stiff mode of rate lambda (a = lambda dt) the step is then
+// w_{n+1} = w_n + dt u_n, u_{n+1} = -lambda (w_n + (1 - theta) dt u_n) / (1 + theta a): damped,
+// |z|^2 = theta a / (1 + theta a), but weakly at large a; first order in the geometry
+// (experiments/05_shell3d, "One solve per step").
 // Each solve starts from the previous solve's velocity (and duals), set after the configuration
 // is moved (moving it copies the blended velocity; until Nov 2026 the later solves started from
 // that blend, 4-45x farther from their answer). Every solve but the last stops at a looser
@@ -219,7 +226,7 @@ bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solv
     }
   } restore{g_, scene_.numerics.tolerance};
   const double theta = scene_.numerics.implicit_theta;
-  const int solves = options_.implicit_solves;
+  const int solves = scene_.numerics.implicit_solves;
   const double loose_tolerance =
       std::max(scene_.numerics.tolerance,
                std::min(StepDriverOptions::kMaxLooseTolerance,

@@ -26,7 +26,6 @@ bool StepDriverOptions::IsValid(std::string* why) const {
     return fail("stall_fraction must be in (0, 1)");
   if (!(min_thickness_ratio > 0.0 && min_thickness_ratio < 1.0 && max_thickness_ratio > 1.0))
     return fail("thickness ratios must bracket 1");
-  if (implicit_solves < 1) return fail("implicit_solves must be at least 1");
   if (!(implicit_first_tolerance_factor >= 1.0 && std::isfinite(implicit_first_tolerance_factor)))
     return fail("implicit_first_tolerance_factor must be a finite number >= 1");
   if (!(residual_force_floor >= 0.0 && residual_force_floor < 1e-3))

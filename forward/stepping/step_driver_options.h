@@ -38,12 +38,6 @@ struct StepDriverOptions {
   // holder edge, h = 13 h0).
   double min_thickness_ratio = 0.05;
   double max_thickness_ratio = 3.0;
-  // Implicit geometry update (numerics.time_integration = "implicit"): velocity solves per step,
-  // each in the configuration moved with the previous solve's velocity (a fixed count, so that
-  // the step is a smooth map of the parameters; see step_driver.h). Measured on ex1 (50
-  // elements, 0.25 element lengths per step): a third solve moves the force by <= 0.005 % and
-  // the smallest thickness by 4e-5 mm, for 47 % more factorisations.
-  int implicit_solves = 2;
   // Newton tolerance of every implicit solve but the last, as a multiple of numerics.tolerance
   // (at most kMaxLooseTolerance; 1: all solves to numerics.tolerance). Their velocity only places
   // the configuration of the next solve, which starts from it and is solved to the tolerance.
