@@ -201,7 +201,8 @@ int main(int argc, char** argv) {
   RunArgs run_args;
   CLI::App* run = app.add_subcommand(
       "run",
-      "Run a scene (either geometry) and write its run folder: load_travel.csv (streamed during "
+      "Run a scene (either geometry) and write its run folder: scene.toml (the scene as run, "
+      "every key with the value used: runs again as is), load_travel.csv (streamed during "
       "the run), thinnest_point.csv, strains_travel_<travel>mm.csv (3D: "
       "strains_travel_<travel>mm_<line>.csv for the lines x, y, diagonal), fld_points.csv "
       "(with each element's margin to the forming-limit curve of [forming_limit]), "

@@ -15,6 +15,7 @@
 #include "output/svg_plot.h"
 #include "output/text_file.h"
 #include "output/vtu_writer.h"
+#include "scene/scene_echo.h"
 
 namespace vs {
 namespace {
@@ -64,6 +65,7 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
                                           const std::string& directory,
                                           const RunWriterOptions& options) {
   FolderWriter out(directory);
+  out.text("scene.toml", scene_toml(scene));
   out.text("load_travel.csv", load_travel_csv(result.steps));
   out.text("thinnest_point.csv", thinnest_point_csv(result.steps, scene.blank.thickness_mm));
   const FormingLimitCurve flc = forming_limit_curve(scene);

@@ -1,5 +1,7 @@
 // Writes the run folder of either geometry from a Scene and its RunResult, with the same names,
 // columns and units:
+//   scene.toml                                   the scene as run (scene_echo.h): every key
+//                                                that applies, with its value; runs again as is
 //   load_travel.csv, thinnest_point.csv          per step
 //   strains_travel_<travel>mm.csv                per profile (axisymmetric: the meridian)
 //   strains_travel_<travel>mm_<line>.csv         per profile of a 3D run (lines x, y, diagonal;

@@ -1,7 +1,8 @@
-// The resolved Scene (every field, defaults included) as JSON for run.json, so a run folder says
-// exactly what was simulated. Keys are the Scene field names, which carry their units
-// (radius_mm, K_MPa...); enums are written as lower_snake_case words; an infinite friction
-// coefficient is written as the string "sticking" (JSON has no infinity).
+// The scene as run (scene/scene_echo.h: every key that applies to it, defaults included) as JSON
+// for run.json, so a run folder says exactly what was simulated: nested by section
+// ("material": {"hardening": {...}}), the tools as an array of objects, key names as in a scene
+// file (they carry their units: radius_mm, K_MPa), enums as their scene-file words, an infinite
+// friction coefficient as "sticking".
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -24,7 +24,8 @@ TEST(RunWriter, WritesEveryFileOfACompletedRun) {
   const RunResult result = test::completed_result();
   const std::vector<std::string> files = write_run_folder(scene, result, dir.string());
 
-  const std::vector<std::string> expected = {"load_travel.csv",
+  const std::vector<std::string> expected = {"scene.toml",
+                                             "load_travel.csv",
                                              "thinnest_point.csv",
                                              "strains_travel_001.00mm.csv",
                                              "strains_travel_002.00mm.csv",

@@ -11,10 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "forming_util.h"
 #include "output/run_summary.h"
 #include "output/run_writer.h"
+#include "scene/load_scene.h"
 
 namespace vs {
 namespace {
@@ -45,6 +48,46 @@ std::vector<double> vtu_values(const std::string& vtu, const std::string& name) 
   std::istringstream in(vtu.substr(begin, vtu.find("</DataArray>", begin) - begin));
   for (double v; in >> v;) values.push_back(v);
   return values;
+}
+
+// scene.toml is the scene as run: run again from the folder, it gives the same files to the bit
+// (both geometries; the 3D scene with its geometry defaults, the axisymmetric one with --set
+// style edits that the echo must carry). run.json's scene record names the same values.
+TEST(FormingOutputs, SceneTomlRunsAgainToTheSameBits) {
+  struct Case {
+    const char* scene;
+    std::vector<std::pair<std::string, std::string>> edits;
+  };
+  for (const Case& c : {Case{"ex1_hemispherical_stretching.toml",
+                             {{"process.punch_travel_mm", "4"},
+                              {"process.output_travels_mm", "[2.0, 4.0]"},
+                              {"tool.punch.friction", "0.13"},
+                              {"material.hardening.n", "0.2"}}},
+                        Case{"ex4a_quarter_disc_sticking.toml",
+                             {{"blank.divisions", "4"},
+                              {"process.punch_travel_mm", "2"},
+                              {"process.output_travels_mm", "[2.0]"}}}}) {
+    SCOPED_TRACE(c.scene);
+    const Scene scene = test::load_with(c.scene, c.edits);
+    const RunResult first = simulate(scene);
+    ASSERT_TRUE(first.completed()) << first.message;
+    const fs::path one = write(scene, first, "echo_first");
+    const Scene again = load_scene((one / "scene.toml").string());
+    const RunResult second = simulate(again);
+    ASSERT_TRUE(second.completed()) << second.message;
+    const fs::path two = write(again, second, "echo_second");
+    for (const char* file : {"load_travel.csv", "fld_points.csv", "thinnest_point.csv"}) {
+      EXPECT_EQ(read(two / file), read(one / file)) << file;
+    }
+    const auto j = nlohmann::json::parse(read(one / "run.json"));
+    EXPECT_EQ(j["scene"]["process"]["punch_travel_mm"], scene.process.punch_travel_mm);
+    EXPECT_EQ(j["scene"]["numerics"]["start_refinement"], scene.numerics.start_refinement);
+    if (scene.tools.at(0).sticking()) {
+      EXPECT_EQ(j["scene"]["tools"][0]["friction"], "sticking");
+    } else {
+      EXPECT_EQ(j["scene"]["tools"][0]["friction"], scene.tools.at(0).friction);
+    }
+  }
 }
 
 TEST(FormingOutputs, ShellSeriesStartsAtZeroTravelWithStressesAndMargins) {
