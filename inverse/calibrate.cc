@@ -15,6 +15,7 @@
 #include "least_squares.h"
 #include "objective.h"
 #include "report.h"
+#include "scene/scene_echo.h"
 #include "scene/scene_table.h"
 
 namespace vs {
@@ -707,6 +708,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
   const auto values = cache.all_values(x);
   for (std::size_t i = 0; i < specs.size(); ++i) {
     result.parameters.push_back({specs[i], unit_of_address(specs[i].address), values[i]});
+  }
+
+  for (const SceneBinding& b : cache.scenes()) {
+    try {
+      result.identified_scenes.push_back(scene_toml(b.bind(values)));
+    } catch (const InputError& e) {
+      result.identified_scenes.emplace_back();
+      result.report_notes.push_back(
+          fmt::format("no identified scene for {}: {}", b.source(), e.what()));
+    }
   }
 
   const auto final_point = objective.evaluate(x);

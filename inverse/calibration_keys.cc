@@ -515,7 +515,9 @@ std::string calibration_reference_markdown() {
       "rather than written as null), "
       "`evaluations.csv` (every forward evaluation; a failed one has status `failed`, an "
       "empty cost and the reason), `fit_<name>.csv` and `.svg` (measured against simulated at "
-      "the optimum) and `cost.svg`.\n";
+      "the optimum), `cost.svg` and `identified_<scene>.toml` per scene (the scene with the "
+      "identified values written in, as the fit ran it: `vshell run` on it reproduces the "
+      "fit's forward run).\n";
   return out;
 }
 

@@ -33,7 +33,8 @@ bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, EchoValue* val
   const std::string address = key.address_in_section();
   // Held in another form than the key's accessor (the loader reads them itself).
   if (address == "material.hardening.table") {
-    *value = pairs(scene.material.hardening.table_strain, scene.material.hardening.table_stress_MPa);
+    *value =
+        pairs(scene.material.hardening.table_strain, scene.material.hardening.table_stress_MPa);
     return true;
   }
   if (address == "forming_limit.points") {
@@ -41,8 +42,7 @@ bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, EchoValue* val
     return true;
   }
   // The normal-anisotropy R is refused beside a planar anisotropy model (scene_reader.cc).
-  if (address == "material.r_value" &&
-      scene.material.anisotropy.planar()) {
+  if (address == "material.r_value" && scene.material.anisotropy.planar()) {
     return false;
   }
   if (address == "output.measured_cup_profile") {

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "inverse_test_support.h"
 #include "scene/fuzz_mutate.h"
+#include "scene/load_scene.h"
 #include "scene/toml_guard.h"
 
 namespace vs {
@@ -165,6 +166,28 @@ TEST_F(CalibrationFuzz, DataWithoutSigmaGetTheRelativeDefaultAndTheReportSaysSo)
   std::stringstream json;
   json << in.rdbuf();
   EXPECT_NE(json.str().find("\"relative_default\": true"), std::string::npos);
+}
+
+// identified_<scene>.toml: the scene with the identified values written in, as the fit ran it
+// (its [forward.set] edits included); it loads as a scene and holds every identified value.
+TEST_F(CalibrationFuzz, TheIdentifiedSceneLoadsWithTheIdentifiedValues) {
+  write_file(dir_ / "calibrate.toml", kConfig);
+  const CalibrationConfig config = load_calibration_config((dir_ / "calibrate.toml").string());
+  CalibrationOptions options;
+  options.output_directory = (dir_ / "out").string();
+  const CalibrationResult result = calibrate(config, options, StretchingFake{});
+  ASSERT_NE(result.termination, CalibrationTermination::kFailed) << result.message;
+  ASSERT_EQ(result.identified_scenes.size(), 1u);
+  const Scene scene = load_scene((dir_ / "out" / "identified_scene.toml").string());
+  ASSERT_EQ(result.parameters.size(), 2u);
+  EXPECT_EQ(scene.tools.at(0).friction, result.parameters[0].value);
+  EXPECT_EQ(scene.material.hardening.K_MPa, result.parameters[1].value);
+  EXPECT_EQ(scene.blank.elements, 24);                            // [forward.set]
+  EXPECT_EQ(scene.numerics.tolerance, config.forward.tolerance);  // the fit's forward setting
+  std::ifstream in(dir_ / "out" / "identified_scene.toml");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("#   tool.punch.friction = "), std::string::npos) << text.str();
 }
 
 // Files written for a failed calibration: no NaN, no null, the reason stated.

@@ -116,8 +116,8 @@ TEST(SceneEcho, EveryKeyIsEchoedWhereItApplies) {
     if (echo_skips(key)) continue;
     const Scene s = scene_for(key);
     const std::vector<EchoEntry> echo = echo_scene(s);
-    const bool found = std::any_of(echo.begin(), echo.end(),
-                                   [&](const EchoEntry& e) { return e.key == &key; });
+    const bool found =
+        std::any_of(echo.begin(), echo.end(), [&](const EchoEntry& e) { return e.key == &key; });
     EXPECT_TRUE(found) << key.address_in_section();
     ++checked;
   }
