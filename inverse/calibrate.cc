@@ -710,10 +710,23 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
     result.parameters.push_back({specs[i], unit_of_address(specs[i].address), values[i]});
   }
 
-  for (const SceneBinding& b : cache.scenes()) {
+  // Each scene with the identified values written in (not for a failed fit: x is the start).
+  for (std::size_t k = 0; k < cache.scenes().size(); ++k) {
+    const SceneBinding& b = cache.scenes()[k];
+    if (result.termination == CalibrationTermination::kFailed) break;
     try {
-      result.identified_scenes.push_back(scene_toml(b.bind(values)));
-    } catch (const InputError& e) {
+      std::string header = fmt::format(
+          "# Scene '{}' as the fit of {} ran it, with the identified values\n"
+          "# written in (calibration.json has their intervals and the fit's verdicts):\n",
+          k < config.scenes.size() ? config.scenes[k].name : b.source(),
+          config.path.empty() ? "a calibration" : config.path);
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        if (!b.applies(static_cast<int>(i))) continue;  // not a key of this scene
+        header += fmt::format("#   {} = {}{}\n", specs[i].address, values[i],
+                              specs[i].fixed ? " (fixed)" : "");
+      }
+      result.identified_scenes.push_back(header + scene_toml(b.bind(values)));
+    } catch (const std::exception& e) {
       result.identified_scenes.emplace_back();
       result.report_notes.push_back(
           fmt::format("no identified scene for {}: {}", b.source(), e.what()));

@@ -130,8 +130,9 @@ struct CalibrationResult {
   GlobalSearchSummary global;  // when used
   std::vector<DataSetFit> fits;
   // Per scene (config order): the scene with the identified values written in, as the fit ran
-  // it (with the forward settings), as a scene file (scene_echo.h); "" where it could not be
-  // built. Written as identified_<scene>.toml: `vshell run` on it reproduces the fit's run.
+  // it (with the forward settings), as a scene file (scene_echo.h) with a comment header naming
+  // the values; "" where it could not be built, none for a failed fit. Written as
+  // identified_<scene>.toml: `vshell run` on it reproduces the fit's run.
   std::vector<std::string> identified_scenes;
   // The forward model's trust caveats (RunResult::warnings) at the identified parameters, e.g.
   // elements shorter than the thickness; "<scene>: " in front with several scenes. A fit is only

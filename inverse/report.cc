@@ -360,24 +360,6 @@ std::string evaluations_csv(const CalibrationResult& result) {
   return text;
 }
 
-namespace {
-
-// The comment lines in front of identified_<scene>.toml: which fit, and the values written in.
-std::string identified_scene_header(const CalibrationResult& result,
-                                    const CalibrationConfig& config, std::size_t scene) {
-  std::string text = fmt::format(
-      "# Scene '{}' as the fit of {} ran it, with the identified values\n"
-      "# written in (calibration.json has their intervals and the fit's verdicts):\n",
-      config.scenes[scene].name, config.path.empty() ? "a calibration" : config.path);
-  for (const ParameterResult& p : result.parameters) {
-    text += fmt::format("#   {} = {}{}\n", p.spec.address, format_number(p.value),
-                        p.spec.fixed ? " (fixed)" : "");
-  }
-  return text;
-}
-
-}  // namespace
-
 std::vector<std::string> write_calibration_report(const CalibrationResult& result,
                                                   const CalibrationConfig& config,
                                                   const std::string& directory) {
@@ -396,14 +378,14 @@ std::vector<std::string> write_calibration_report(const CalibrationResult& resul
   if (config.plots) write_svg(cost_figure(result), (dir / "cost.svg").string());
   if (result.fits.empty()) notes.push_back("no fit files: the final point has no forward result");
   write_text_file((dir / "evaluations.csv").string(), evaluations_csv(result));
-  for (std::size_t k = 0; k < result.identified_scenes.size() && k < config.scenes.size(); ++k) {
-    if (result.identified_scenes[k].empty()) continue;
-    write_text_file((dir / ("identified_" + config.scenes[k].name + ".toml")).string(),
-                    identified_scene_header(result, config, k) + result.identified_scenes[k]);
-  }
   CalibrationResult with_notes = result;
   with_notes.report_notes.insert(with_notes.report_notes.end(), notes.begin(), notes.end());
   write_text_file((dir / "calibration.json").string(), calibration_json(with_notes, config));
+  for (std::size_t k = 0; k < result.identified_scenes.size() && k < config.scenes.size(); ++k) {
+    if (result.identified_scenes[k].empty()) continue;
+    write_text_file((dir / ("identified_" + config.scenes[k].name + ".toml")).string(),
+                    result.identified_scenes[k]);
+  }
   return notes;
 }
 

@@ -83,13 +83,15 @@ double force_at_travel(const vs::RunResult& r, double t) {
 }
 
 // --fine-reference: the same scene and mesh at `per_length` element lengths per step with contact
-// events and no graded start (the default implicit update otherwise), and the deviation of r from
+// events and no graded start (the default implicit update otherwise: two solves per step, second
+// order, whatever the run's numerics.implicit_solves), and the deviation of r from
 // it at every output travel both reached: force, and the largest nodal |d eps_t| = |ln(h / h_ref)|.
 void print_against_fine_reference(vs::Scene scene, const vs::RunResult& r, double per_length) {
   scene.numerics.time_integration = vs::TimeIntegration::kImplicit;
   scene.numerics.max_travel_increment_per_length = per_length;
   scene.numerics.contact_events = true;
   scene.numerics.start_refinement = 0;
+  scene.numerics.implicit_solves = 2;
   const auto t0 = std::chrono::steady_clock::now();
   const vs::RunResult ref = vs::shell3d::simulate_shell3d(scene, vs::RunOptions{});
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -199,6 +201,10 @@ Args parse(int argc, char** argv) {
       a.start_refinement = std::stoi(value);
     } else if (key == "--implicit-solves") {
       a.implicit_solves = std::stoi(value);
+      if (a.implicit_solves < 1 || a.implicit_solves > 3) {
+        std::fprintf(stderr, "--implicit-solves must be 1, 2 or 3\n");
+        std::exit(2);
+      }
     } else if (key == "--fine-reference") {
       a.fine_reference = std::stod(value);
     } else {

@@ -15,7 +15,8 @@ namespace vs::shell3d {
 // Requires a circular blank. Its numerics.max_travel_increment_per_length is at most
 // kTwinTravelIncrementPerLength and its numerics.strain_rate_cutoff at most the default (1e-4):
 // the reference is run converged in the travel step and at the default cut-off even when the 3D
-// scene (or the scene default) relaxes them to save time.
+// scene (or the scene default) relaxes them to save time. Its step grid has the axisymmetric
+// defaults (contact events, no graded start) and two solves per implicit step.
 Scene axisymmetric_twin(const Scene& shell3d_scene, int elements);
 
 // The twin's travel step, in element lengths: 0.025, the explicit update's stability cap and the

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string_view>
 
@@ -58,10 +59,16 @@ std::string flow_curve_size_problem(const FlowCurveTable& curve) {
   if (curve.strain.size() < 2) {
     return fmt::format("a flow curve needs at least 2 points, got {}", curve.strain.size());
   }
+  if (curve.strain.size() > kMaxFlowCurvePoints) {
+    return fmt::format("a flow curve may have at most {} points, got {}", kMaxFlowCurvePoints,
+                       curve.strain.size());
+  }
   return "";
 }
 
 FlowCurveTable read_flow_curve_csv(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) check_text_input_file(path, "table file");
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("cannot open table file '{}'", path));
   FlowCurveTable curve;

@@ -7,6 +7,8 @@
 #include <limits>
 #include <string_view>
 
+#include "scene/text_checks.h"
+
 namespace vs {
 
 namespace {
@@ -91,7 +93,16 @@ bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, EchoValue* val
   return false;
 }
 
-std::string toml_string(std::string_view text) {
+// A TOML basic string. Control characters (and DEL) are escaped; a string that is not valid
+// UTF-8 (a path of a folder named in another encoding) cannot be written in TOML at all: its
+// bytes above 0x7F are replaced by U+FFFD (the loader refuses such a value given with --set).
+std::string toml_string(std::string_view raw) {
+  std::string fixed;
+  if (!valid_utf8(raw)) {
+    for (char c : raw) fixed += static_cast<unsigned char>(c) < 0x80 ? std::string(1, c) : "\uFFFD";
+    raw = fixed;
+  }
+  std::string_view text = raw;
   std::string out = "\"";
   for (char c : text) {
     switch (c) {
@@ -108,7 +119,7 @@ std::string toml_string(std::string_view text) {
         out += "\\t";
         break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20) {
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
           out += fmt::format("\\u{:04x}", static_cast<int>(c));
         } else {
           out += c;
@@ -179,10 +190,16 @@ std::string echo_toml_text(const EchoValue& value) {
 }
 
 std::string scene_toml(const Scene& scene) {
+  std::string source = scene.source.empty() ? "(a scene built in code)" : scene.source;
+  for (char& c : source) {
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';  // one comment line
+  }
   std::string out = fmt::format(
       "# The scene as run: every key that applies to it, with the value used (defaults\n"
-      "# included). Read from {}. Units: mm, N, s, MPa.\n",
-      scene.source.empty() ? "(a scene built in code)" : scene.source);
+      "# included). Read from {}. Units: mm, N, s, MPa.\n"
+      "# Run it again with `vshell run scene.toml -o FOLDER` (without -o the run replaces\n"
+      "# output.directory).\n",
+      source);
   std::string_view section = "";
   int tool = -1;
   for (const EchoEntry& e : echo_scene(scene)) {

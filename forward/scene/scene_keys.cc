@@ -366,8 +366,9 @@ std::vector<KeySpec> build_keys() {
              "heun: explicit predictor-corrector (two solves per step, second order, stable only "
              "below about 0.025 element lengths per step); euler: the paper's update with the "
              "start-of-step velocity (first order); implicit: the velocity solved in the "
-             "end-of-step configuration (two solves per step, with the configuration's dependence "
-             "on the velocity), stable at steps set by accuracy: with "
+             "end-of-step configuration (two solves per step by default, implicit_solves; with "
+             "the configuration's dependence on the velocity), stable at steps set by accuracy: "
+             "with "
              "max_travel_increment_per_length = 0.25 it runs ex1 about 8x faster than heun at "
              "its default step, within 0.2 % in force (experiments/06_step_stability); in 3D "
              "(ex4a, 8 divisions, friction 0.2, to 30 mm, with the 3D defaults contact_events = "
@@ -377,18 +378,19 @@ std::vector<KeySpec> build_keys() {
            "", closed(0.5, 1),
            "Implicit update x_{n+1} = x_n + dt ((1 - theta) v_n + theta v_{n+1}): 0.5 trapezoidal "
            "(second order), 1 backward Euler (first order; damps the stiffest modes fully)."));
-  add(make(nu, "implicit_solves", kInt, int_field<&numerics, &NumericsSpec::implicit_solves>(), "",
-           closed(1, 3),
-           "Implicit update: velocity solves per step, each in the configuration moved with the "
-           "previous solve's velocity. 2: the update of implicit_theta (second order). 1: a 3D "
-           "speed setting, one solve in the configuration moved with the start velocity (first "
-           "order; a stiff mode is damped only weakly at large steps). Measured against the same "
-           "mesh at 1/4-1/8 of the step with contact events: ex4a quarter disc, 16 divisions, "
-           "friction 0.2, to 30 mm: 1.6x faster (21 s instead of 34 s) and as close (force within "
-           "0.21 % instead of 0.51 %, thickness strain 0.0106 instead of 0.0108); 8 divisions: "
-           "thickness strain 0.0065 instead of 0.0035; ex2 in 3D: force 0.3-0.6 % instead of "
-           "0.02-0.07 % off, 1.8 % where the force drops at 40 mm (experiments/05_shell3d). 3: "
-           "one more solve (the axisymmetric ex1: force within 0.005 % of 2)."));
+  add(make(
+      nu, "implicit_solves", kInt, int_field<&numerics, &NumericsSpec::implicit_solves>(), "",
+      closed(1, 3),
+      "Implicit update: velocity solves per step, each in the configuration moved with the "
+      "previous solve's velocity. 2: the update of implicit_theta (second order). 1: a 3D "
+      "speed setting, one solve in the configuration moved with the start velocity (first "
+      "order; a stiff mode is damped only weakly at large steps). Measured against the same "
+      "mesh at 1/4-1/8 of the step with contact events: ex4a quarter disc, 16 divisions, "
+      "friction 0.2, to 30 mm: 1.5x faster (18.5 s instead of 28 s) and as close (force within "
+      "0.21 % instead of 0.51 %, thickness strain 0.0106 instead of 0.0108); 8 divisions: "
+      "thickness strain 0.0065 instead of 0.0035; ex2 in 3D: force 0.3-0.6 % instead of "
+      "0.02-0.07 % off, 1.8 % where the force drops at 40 mm (experiments/05_shell3d). 3: "
+      "one more solve (the axisymmetric ex1: force within 0.005 % of 2)."));
   add(make(nu, "contact_events", KeyType::kBool,
            bool_field<&numerics, &NumericsSpec::contact_events>(), "", Range{},
            "Implicit update: end steps at contact events (heun always does). false: a node that "

@@ -13,6 +13,7 @@
 #include "scene/did_you_mean.h"
 #include "scene/scene_diagnostics.h"
 #include "scene/scene_keys.h"
+#include "scene/text_checks.h"
 #include "scene/toml_guard.h"
 
 namespace vs {
@@ -202,6 +203,9 @@ void set_scene_value_from_text(toml::table& table, const std::string& address,
       return;
     }
   } catch (const toml::parse_error&) {
+  }
+  if (!valid_utf8(text)) {
+    throw InputError(fmt::format("--set {}: the value is not valid UTF-8 text", address));
   }
   owner.insert_or_assign(target.key->name, text);
 }

@@ -18,6 +18,10 @@ inline constexpr std::size_t kMaxTextInputBytes = 64u << 20;
 // `what` names the file kind ("measurement file").
 void check_text_input_file(const std::string& path, const std::string& what);
 
+// Whether `text` is well-formed UTF-8 (no stray continuation bytes, overlong forms, surrogates or
+// code points beyond U+10FFFF).
+bool valid_utf8(std::string_view text);
+
 // `s` without leading and trailing blanks (space, tab, carriage return).
 std::string_view trim_blanks(std::string_view s);
 

@@ -389,6 +389,14 @@ RunResult run_stepper(const Scene& scene, const RunOptions& options) {
     failed.message = "invalid step driver options: " + why;
     return failed;
   }
+  // A scene file's range check does not reach a scene built in code.
+  if (scene.numerics.implicit_solves < 1 || scene.numerics.implicit_solves > 3) {
+    RunResult failed;
+    failed.termination = Termination::kFailed;
+    failed.message = fmt::format("numerics.implicit_solves = {} is out of range [1, 3]",
+                                 scene.numerics.implicit_solves);
+    return failed;
+  }
   Stepper stepper(scene, options, options.driver);
   StepDriver<Stepper> driver(scene, options, options.driver, stepper);
   return driver.run();

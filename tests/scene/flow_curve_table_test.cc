@@ -1,6 +1,7 @@
 // Hardening law "table": inline tables, CSV files (relative to the scene) and their errors.
 #include "scene/flow_curve_table.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -86,6 +87,13 @@ TEST(FlowCurveTable, MalformedCsvNamesFileAndLine) {
             "curve.csv:2: a flow curve needs at least 2 points, got 1");
   EXPECT_EQ(error_for("# only comments\n"),
             "curve.csv:1: no header 'plastic_strain,stress_MPa' found");
+  // At most kMaxFlowCurvePoints (the curve must fit inline in the scene.toml of a run folder).
+  std::string many = "plastic_strain,stress_MPa\n";
+  for (std::size_t i = 0; i <= kMaxFlowCurvePoints; ++i) many += fmt::format("{},{}\n", i, 100 + i);
+  EXPECT_EQ(error_for(many),
+            fmt::format("curve.csv:{}: a flow curve may have at most {} points, "
+                        "got {}",
+                        kMaxFlowCurvePoints + 2, kMaxFlowCurvePoints, kMaxFlowCurvePoints + 1));
 }
 
 TEST(FlowCurveTable, MissingCsvIsReportedAtTheSceneKey) {

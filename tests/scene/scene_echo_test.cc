@@ -13,8 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "scene/load_scene.h"
 #include "scene/scene_keys.h"
+#include "scene/scene_table.h"
+#include "scene/text_checks.h"
 #include "scene_test_util.h"
 
 namespace vs {
@@ -22,10 +25,10 @@ namespace {
 
 using testing::write_scratch;
 
-// The echo without its two comment lines (which name the file it was read from).
+// The echo without its leading comment lines (which name the file it was read from).
 std::string body(const std::string& toml) {
   std::size_t at = 0;
-  for (int line = 0; line < 2; ++line) at = toml.find('\n', at) + 1;
+  while (at < toml.size() && toml[at] == '#') at = toml.find('\n', at) + 1;
   return toml.substr(at);
 }
 
@@ -55,11 +58,12 @@ TEST(SceneEcho, EveryBundledSceneLoadsBackToTheSameScene) {
 
 // A scene with what a file gives in another form than the Scene holds it: a hardening table from
 // a CSV file (relative to the scene), a sticking tool, a tabulated forming-limit curve, a title
-// with quotes, a backslash and a tab.
+// with quotes, a backslash, a tab and a DEL.
 TEST(SceneEcho, ResolvedFormsLoadBack) {
   write_scratch("curve.csv", "plastic_strain,stress_MPa\n0,200\n0.1,300\n0.5,420\n");
   // (The title goes first: after a table header it would belong to that table.)
-  const std::string text = "title = \"cup \\\"A\\\" \\\\ 1\\t2\"\n" + testing::kMinimalScene +
+  const std::string text = "title = \"cup \\\"A\\\" \\\\ 1\\t2\\u007f\"\n" +
+                           testing::kMinimalScene +
                            "friction = \"sticking\"\n\n"
                            "[material.hardening]\nlaw = \"table\"\ntable_file = \"curve.csv\"\n\n"
                            "[forming_limit]\nmodel = \"table\"\npoints = [[-0.2, 0.4], [0.0, "
@@ -122,6 +126,27 @@ TEST(SceneEcho, EveryKeyIsEchoedWhereItApplies) {
     ++checked;
   }
   EXPECT_GT(checked, 70);
+}
+
+// Text that is not UTF-8 cannot be written in TOML: --set refuses it with a one-line error, and a
+// scene built in code with such a string echoes U+FFFD in its place (the echo still loads).
+TEST(SceneEcho, InvalidUtf8IsRefusedAtSetAndReplacedInTheEcho) {
+  EXPECT_TRUE(valid_utf8("plain, caf\xC3\xA9, \xE2\x82\xAC, \xF0\x9F\x98\x80"));
+  for (const char* bad :
+       {"caf\xE9", "\xC3", "\xC0\xAF", "\xED\xA0\x80", "\xF4\x90\x80\x80", "\x80"}) {
+    EXPECT_FALSE(valid_utf8(bad)) << bad;
+  }
+  toml::table table = toml::parse(testing::kMinimalScene);
+  try {
+    set_scene_value_from_text(table, "title", "caf\xE9");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--set title: the value is not valid UTF-8 text");
+  }
+  Scene scene = load_scene(write_scratch("scene.toml", testing::kMinimalScene));
+  scene.title = "caf\xE9";
+  const Scene back = load_scene(write_scratch("echo.toml", scene_toml(scene)));
+  EXPECT_EQ(back.title, "caf\xEF\xBF\xBD");
 }
 
 // A key of another geometry or variant is not echoed (the loader would refuse it).

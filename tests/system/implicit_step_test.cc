@@ -114,6 +114,15 @@ TEST(ImplicitStep, FirstToleranceFactorIsValidated) {
       simulate(load_with("ex1_hemispherical_stretching.toml", {{"output.history", "false"}}), run);
   EXPECT_FALSE(r.completed());
   EXPECT_NE(r.message.find("implicit_first_tolerance_factor"), std::string::npos) << r.message;
+  // A scene built in code with a solve count out of range fails at once too (a scene file's
+  // range check does not reach it).
+  Scene scene = load_with("ex1_hemispherical_stretching.toml", {{"output.history", "false"}});
+  for (int bad : {0, 4}) {
+    scene.numerics.implicit_solves = bad;
+    const RunResult s = simulate(scene);
+    EXPECT_FALSE(s.completed());
+    EXPECT_NE(s.message.find("numerics.implicit_solves"), std::string::npos) << s.message;
+  }
 }
 
 }  // namespace
