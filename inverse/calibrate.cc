@@ -725,7 +725,16 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
         header += fmt::format("#   {} = {}{}\n", specs[i].address, values[i],
                               specs[i].fixed ? " (fixed)" : "");
       }
-      result.identified_scenes.push_back(header + scene_toml(b.bind(values)));
+      Scene identified = b.bind(values);
+      // Its own run folder beside the report, so that running it does not replace the base
+      // scene's (output.directory is not used by the fit).
+      const std::string report_dir =
+          options.output_directory.empty() ? config.output_directory : options.output_directory;
+      if (!report_dir.empty() && k < config.scenes.size()) {
+        identified.output.directory =
+            (fs::path(report_dir) / ("run_identified_" + config.scenes[k].name)).string();
+      }
+      result.identified_scenes.push_back(header + scene_toml(identified));
     } catch (const std::exception& e) {
       result.identified_scenes.emplace_back();
       result.report_notes.push_back(

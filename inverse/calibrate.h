@@ -132,7 +132,8 @@ struct CalibrationResult {
   // Per scene (config order): the scene with the identified values written in, as the fit ran
   // it (with the forward settings), as a scene file (scene_echo.h) with a comment header naming
   // the values; "" where it could not be built, none for a failed fit. Written as
-  // identified_<scene>.toml: `vshell run` on it reproduces the fit's run.
+  // identified_<scene>.toml: `vshell run` on it reproduces the fit's run, into the folder
+  // run_identified_<scene> beside the report (its output.directory).
   std::vector<std::string> identified_scenes;
   // The forward model's trust caveats (RunResult::warnings) at the identified parameters, e.g.
   // elements shorter than the thickness; "<scene>: " in front with several scenes. A fit is only

@@ -517,7 +517,7 @@ std::string calibration_reference_markdown() {
       "empty cost and the reason), `fit_<name>.csv` and `.svg` (measured against simulated at "
       "the optimum), `cost.svg` and `identified_<scene>.toml` per scene (the scene with the "
       "identified values written in, as the fit ran it: `vshell run` on it reproduces the "
-      "fit's forward run).\n";
+      "fit's forward run, into `run_identified_<scene>` beside the report).\n";
   return out;
 }
 

@@ -184,6 +184,8 @@ TEST_F(CalibrationFuzz, TheIdentifiedSceneLoadsWithTheIdentifiedValues) {
   EXPECT_EQ(scene.material.hardening.K_MPa, result.parameters[1].value);
   EXPECT_EQ(scene.blank.elements, 24);                            // [forward.set]
   EXPECT_EQ(scene.numerics.tolerance, config.forward.tolerance);  // the fit's forward setting
+  // Its run folder lies beside the report, not on the base scene's.
+  EXPECT_EQ(scene.output.directory, (dir_ / "out" / "run_identified_scene").string());
   std::ifstream in(dir_ / "out" / "identified_scene.toml");
   std::stringstream text;
   text << in.rdbuf();
