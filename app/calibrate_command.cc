@@ -36,6 +36,7 @@ int run_calibrate(const CalibrateArgs& args) {
                    "calibration.json");
   CalibrationOptions options;
   options.output_directory = folder.path();
+  options.report_destination = folder.destination();
   if (!args.quiet) {
     options.progress = [](const std::string& line) {
       fmt::print("{}\n", line);

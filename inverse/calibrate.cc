@@ -728,8 +728,10 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
       Scene identified = b.bind(values);
       // Its own run folder beside the report, so that running it does not replace the base
       // scene's (output.directory is not used by the fit).
-      const std::string report_dir =
-          options.output_directory.empty() ? config.output_directory : options.output_directory;
+      const std::string report_dir = !options.report_destination.empty()
+                                         ? options.report_destination
+                                     : options.output_directory.empty() ? config.output_directory
+                                                                        : options.output_directory;
       if (!report_dir.empty() && k < config.scenes.size()) {
         identified.output.directory =
             (fs::path(report_dir) / ("run_identified_" + config.scenes[k].name)).string();

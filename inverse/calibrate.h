@@ -25,6 +25,9 @@ struct CalibrationOptions {
   bool write_report = true;
   // Replaces config.output_directory when not empty (vshell calibrate -o DIR).
   std::string output_directory;
+  // Where the report ends up, when output_directory is a staging folder that replaces it at the
+  // end (vshell calibrate); "" = output_directory. The identified scenes run beside it.
+  std::string report_destination;
   // Statistical uncertainty at the optimum (one more Jacobian); the model-form refits skip it.
   bool uncertainty = true;
 };

@@ -246,6 +246,30 @@ TEST(CliRun, CompletedRunExitsZeroAndAppliesEverySet) {
   EXPECT_EQ(std::count(profile.begin(), profile.end(), '\n'), 14) << profile.substr(0, 200);
 }
 
+// A calibration's identified_<scene>.toml runs as it is, into run_identified_<scene> beside the
+// report (not over the base scene's folder, and not into the report's staging folder).
+TEST(CliRun, TheIdentifiedSceneOfACalibrationRunsBesideTheReport) {
+  const fs::path dir = scratch();
+  const std::string data = std::string(VS_SOURCE_DIR) + "/data/calibration/";
+  write(dir / "cal.toml", "scene = '" + kScene +
+                              "'\n[[parameter]]\naddress = \"tool.punch.friction\"\n"
+                              "initial = 0.07\nlower = 0.0\nupper = 0.5\n"
+                              "[[data]]\nkind = \"thickness_strain\"\nfile = '" +
+                              data +
+                              "synthetic_ex1_clean_thick_10mm.csv'\ntravel_mm = 10\n"
+                              "[optimizer]\nmax_iterations = 2\n"
+                              "[forward.set]\n\"blank.elements\" = 24\n"
+                              "\"process.punch_travel_mm\" = 10\n");
+  const Outcome cal = vshell(dir, "calibrate cal.toml -o report --quiet");
+  ASSERT_EQ(cal.exit_code, 0) << cal.err;
+  const std::string identified = read_all(dir / "report" / "identified_scene.toml");
+  EXPECT_NE(identified.find("directory = \"report/run_identified_scene\""), std::string::npos)
+      << identified;
+  const Outcome run = vshell(dir, "run report/identified_scene.toml");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_FALSE(read_all(dir / "report" / "run_identified_scene" / "load_travel.csv").empty());
+}
+
 TEST(CliRun, StoppedRunExitsThreeWithTheReasonAndKeepsItsSteps) {
   // One iteration per step and no cut-backs: the first step cannot converge, the run stops.
   const fs::path dir = scratch();
