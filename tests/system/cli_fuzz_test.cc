@@ -150,18 +150,23 @@ TEST(CliFuzz, MutatedScenesNeverCrash) {
 
 // A calibration whose forward run cannot even start: exit 3, the reason on stderr as one line,
 // no NaN and no null in the report.
+// A calibration of ex1's punch friction from the bundled synthetic thickness strains at 10 mm,
+// followed by `tail` (optimizer and forward settings).
+std::string friction_calibration(const std::string& tail) {
+  const std::string data = std::string(VS_SOURCE_DIR) + "/data/calibration/";
+  return "scene = '" + kScene +
+         "'\n[[parameter]]\naddress = \"tool.punch.friction\"\n"
+         "initial = 0.07\nlower = 0.0\nupper = 0.5\n"
+         "[[data]]\nkind = \"thickness_strain\"\nfile = '" +
+         data + "synthetic_ex1_clean_thick_10mm.csv'\ntravel_mm = 10\n" + tail;
+}
+
 TEST(CliFuzz, CalibrationWhoseRunsAllFailExitsThree) {
   const fs::path dir = scratch();
-  const std::string data = std::string(VS_SOURCE_DIR) + "/data/calibration/";
-  write(dir / "cal.toml", "scene = '" + kScene +
-                              "'\n[[parameter]]\naddress = \"tool.punch.friction\"\n"
-                              "initial = 0.07\nlower = 0.0\nupper = 0.5\n"
-                              "[[data]]\nkind = \"thickness_strain\"\nfile = '" +
-                              data +
-                              "synthetic_ex1_clean_thick_10mm.csv'\ntravel_mm = 10\n"
-                              "[forward.set]\n\"blank.elements\" = 24\n"
-                              "\"process.punch_travel_mm\" = 10\n"
-                              "\"numerics.max_iterations\" = 1\n\"numerics.max_cutbacks\" = 0\n");
+  write(dir / "cal.toml",
+        friction_calibration("[forward.set]\n\"blank.elements\" = 24\n"
+                             "\"process.punch_travel_mm\" = 10\n"
+                             "\"numerics.max_iterations\" = 1\n\"numerics.max_cutbacks\" = 0\n"));
   const Outcome o = vshell(dir, "calibrate cal.toml -o report --quiet");
   EXPECT_FALSE(o.signalled);
   EXPECT_EQ(o.exit_code, 3) << o.err;
@@ -250,16 +255,9 @@ TEST(CliRun, CompletedRunExitsZeroAndAppliesEverySet) {
 // report (not over the base scene's folder, and not into the report's staging folder).
 TEST(CliRun, TheIdentifiedSceneOfACalibrationRunsBesideTheReport) {
   const fs::path dir = scratch();
-  const std::string data = std::string(VS_SOURCE_DIR) + "/data/calibration/";
-  write(dir / "cal.toml", "scene = '" + kScene +
-                              "'\n[[parameter]]\naddress = \"tool.punch.friction\"\n"
-                              "initial = 0.07\nlower = 0.0\nupper = 0.5\n"
-                              "[[data]]\nkind = \"thickness_strain\"\nfile = '" +
-                              data +
-                              "synthetic_ex1_clean_thick_10mm.csv'\ntravel_mm = 10\n"
-                              "[optimizer]\nmax_iterations = 2\n"
-                              "[forward.set]\n\"blank.elements\" = 24\n"
-                              "\"process.punch_travel_mm\" = 10\n");
+  write(dir / "cal.toml", friction_calibration("[optimizer]\nmax_iterations = 2\n"
+                                               "[forward.set]\n\"blank.elements\" = 24\n"
+                                               "\"process.punch_travel_mm\" = 10\n"));
   const Outcome cal = vshell(dir, "calibrate cal.toml -o report --quiet");
   ASSERT_EQ(cal.exit_code, 0) << cal.err;
   const std::string identified = read_all(dir / "report" / "identified_scene.toml");
