@@ -254,6 +254,49 @@ std::string first_failure(const Evaluation& e, const std::vector<std::string>& s
   return text;
 }
 
+// Where the report is written: the option's folder, else the config's.
+std::string report_directory(const CalibrationConfig& config, const CalibrationOptions& options) {
+  return options.output_directory.empty() ? config.output_directory : options.output_directory;
+}
+
+// identified_<scene>.toml of each scene (one binding per config scene, in order): a header naming
+// the values that apply to it, then the scene with `values` written in, as the fit ran it. Its
+// output.directory is run_identified_<scene> beside the report's final folder: the fit does not
+// use it, and running the scene must not replace the base scene's run folder. A scene that cannot
+// be built gets "" and a report note.
+void identify_scenes(const ForwardCache& cache, const CalibrationConfig& config,
+                     const CalibrationOptions& options, const std::vector<double>& values,
+                     CalibrationResult* result) {
+  const std::vector<ParameterSpec>& specs = cache.parameters();
+  const std::string report_dir = options.report_destination.empty()
+                                     ? report_directory(config, options)
+                                     : options.report_destination;
+  for (std::size_t k = 0; k < cache.scenes().size(); ++k) {
+    const SceneBinding& b = cache.scenes()[k];
+    const std::string& name = config.scenes[k].name;
+    try {
+      std::string text = fmt::format(
+          "# Scene '{}' as the fit of {} ran it, with the identified values\n"
+          "# written in (calibration.json has their intervals and the fit's verdicts):\n",
+          name, config.path.empty() ? "a calibration" : config.path);
+      for (std::size_t i = 0; i < specs.size(); ++i) {
+        if (!b.applies(static_cast<int>(i))) continue;  // not a key of this scene
+        text += fmt::format("#   {} = {}{}\n", specs[i].address, values[i],
+                            specs[i].fixed ? " (fixed)" : "");
+      }
+      Scene identified = b.bind(values);
+      if (!report_dir.empty()) {
+        identified.output.directory = (fs::path(report_dir) / ("run_identified_" + name)).string();
+      }
+      result->identified_scenes.push_back(text + scene_toml(identified));
+    } catch (const std::exception& e) {
+      result->identified_scenes.emplace_back();
+      result->report_notes.push_back(
+          fmt::format("no identified scene for {}: {}", b.source(), e.what()));
+    }
+  }
+}
+
 // Counters, timing and the report folder, on every way out of calibrate().
 void finish(const ForwardCache& cache, const CalibrationConfig& config,
             const CalibrationOptions& options, std::chrono::steady_clock::time_point start,
@@ -264,8 +307,7 @@ void finish(const ForwardCache& cache, const CalibrationConfig& config,
   result->wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.write_report) {
-    result->output_directory =
-        options.output_directory.empty() ? config.output_directory : options.output_directory;
+    result->output_directory = report_directory(config, options);
     result->report_notes = write_calibration_report(*result, config, result->output_directory);
   }
 }
@@ -710,38 +752,9 @@ CalibrationResult calibrate(const CalibrationConfig& input, const CalibrationOpt
     result.parameters.push_back({specs[i], unit_of_address(specs[i].address), values[i]});
   }
 
-  // Each scene with the identified values written in (not for a failed fit: x is the start).
-  for (std::size_t k = 0; k < cache.scenes().size(); ++k) {
-    const SceneBinding& b = cache.scenes()[k];
-    if (result.termination == CalibrationTermination::kFailed) break;
-    try {
-      std::string header = fmt::format(
-          "# Scene '{}' as the fit of {} ran it, with the identified values\n"
-          "# written in (calibration.json has their intervals and the fit's verdicts):\n",
-          k < config.scenes.size() ? config.scenes[k].name : b.source(),
-          config.path.empty() ? "a calibration" : config.path);
-      for (std::size_t i = 0; i < specs.size(); ++i) {
-        if (!b.applies(static_cast<int>(i))) continue;  // not a key of this scene
-        header += fmt::format("#   {} = {}{}\n", specs[i].address, values[i],
-                              specs[i].fixed ? " (fixed)" : "");
-      }
-      Scene identified = b.bind(values);
-      // Its own run folder beside the report, so that running it does not replace the base
-      // scene's (output.directory is not used by the fit).
-      const std::string report_dir = !options.report_destination.empty()
-                                         ? options.report_destination
-                                     : options.output_directory.empty() ? config.output_directory
-                                                                        : options.output_directory;
-      if (!report_dir.empty() && k < config.scenes.size()) {
-        identified.output.directory =
-            (fs::path(report_dir) / ("run_identified_" + config.scenes[k].name)).string();
-      }
-      result.identified_scenes.push_back(header + scene_toml(identified));
-    } catch (const std::exception& e) {
-      result.identified_scenes.emplace_back();
-      result.report_notes.push_back(
-          fmt::format("no identified scene for {}: {}", b.source(), e.what()));
-    }
+  // Not for a failed fit, whose point is the start.
+  if (result.termination != CalibrationTermination::kFailed) {
+    identify_scenes(cache, config, options, values, &result);
   }
 
   const auto final_point = objective.evaluate(x);

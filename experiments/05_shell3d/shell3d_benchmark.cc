@@ -53,6 +53,7 @@
 #include "common/axisym_comparison.h"
 #include "common/harness.h"
 #include "common/shell3d_study.h"
+#include "common/step_stability.h"
 #include "common/table.h"
 #include "output/svg_plot.h"
 #include "run/simulate.h"
@@ -73,13 +74,6 @@ double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
-}
-
-// The punch force of run r at travel t [N] (a step ends there), NaN if none does.
-double force_at_travel(const vs::RunResult& r, double t) {
-  for (const auto& s : r.steps)
-    if (std::abs(s.punch_travel_mm - t) <= 1e-9 * (1.0 + t)) return s.punch_force_N;
-  return std::nan("");
 }
 
 // --fine-reference: the same scene and mesh at `per_length` element lengths per step with contact
@@ -106,8 +100,8 @@ void print_against_fine_reference(vs::Scene scene, const vs::RunResult& r, doubl
       double eps = 0.0;
       for (std::size_t i = 0; i < a.thickness_mm.size() && i < b.thickness_mm.size(); ++i)
         eps = std::max(eps, std::abs(std::log(a.thickness_mm[i] / b.thickness_mm[i])));
-      const double f = force_at_travel(r, a.punch_travel_mm);
-      const double fr = force_at_travel(ref, b.punch_travel_mm);
+      const double f = vsx::force_at(r, a.punch_travel_mm);
+      const double fr = vsx::force_at(ref, b.punch_travel_mm);
       devs += fmt::format(" {:g}:{:+.2f}/{:.4f}", a.punch_travel_mm, 100.0 * (f / fr - 1.0), eps);
       break;
     }

@@ -12,14 +12,14 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json json_value(const EchoValue& value) {
+Json json_value(const KeyValue& value) {
   struct ToJson {
     Json operator()(double x) const { return x; }
     Json operator()(int x) const { return x; }
     Json operator()(bool x) const { return x; }
     Json operator()(const std::string& x) const { return x; }
     Json operator()(const std::vector<double>& x) const { return x; }
-    Json operator()(const EchoPairs& x) const {
+    Json operator()(const KeyPairs& x) const {
       Json a = Json::array();
       for (const auto& p : x) a.push_back({p[0], p[1]});
       return a;

@@ -6,8 +6,7 @@
 #include <filesystem>
 #include <limits>
 #include <string_view>
-
-#include "scene/text_checks.h"
+#include <variant>
 
 namespace vs {
 
@@ -23,15 +22,14 @@ std::string_view variant_of(std::string_view section, Scene& scene, ToolSpec& to
   return key->choices.at(static_cast<std::size_t>(index));
 }
 
-EchoPairs pairs(const std::vector<double>& a, const std::vector<double>& b) {
-  EchoPairs out;
+KeyPairs pairs(const std::vector<double>& a, const std::vector<double>& b) {
+  KeyPairs out;
   for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) out.push_back({a[i], b[i]});
   return out;
 }
 
 // The value of `key` as the run used it; false if the key has no value to echo.
-bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, EchoValue* value) {
-  const KeyField& f = key.field;
+bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, KeyValue* value) {
   const std::string address = key.address_in_section();
   // Held in another form than the key's accessor (the loader reads them itself).
   if (address == "material.hardening.table") {
@@ -44,89 +42,24 @@ bool read_value(const KeySpec& key, Scene& scene, ToolSpec& tool, EchoValue* val
     return true;
   }
   // The normal-anisotropy R is refused beside a planar anisotropy model (scene_reader.cc).
-  if (address == "material.r_value" && scene.material.anisotropy.planar()) {
-    return false;
-  }
+  if (address == "material.r_value" && scene.material.anisotropy.planar()) return false;
   if (address == "output.measured_cup_profile") {
     const std::string& path = scene.output.measured_cup_profile;
     *value = path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
     return true;
   }
-  switch (key.type) {
-    case KeyType::kFloat:
-      if (!f.number) return false;
-      // A value a scene file cannot give stands for "not given" (a holder's force_N when it has
-      // a gap, and the other way round).
-      if (!key.range.contains(f.number(scene, tool)) && !key.sticking_alias) return false;
-      if (key.sticking_alias && f.number(scene, tool) == std::numeric_limits<double>::infinity()) {
-        *value = std::string("sticking");
-      } else {
-        *value = f.number(scene, tool);
-      }
+  if (!read_key_value(key, scene, tool, value)) return false;
+  // A number a scene file cannot give stands for "not given" (a holder's force_N when it has a
+  // gap, and the other way round; blank.radial_divisions 0); an infinite friction is "sticking".
+  if (const double* x = std::get_if<double>(value)) {
+    if (key.sticking_alias && *x == std::numeric_limits<double>::infinity()) {
+      *value = std::string("sticking");
       return true;
-    case KeyType::kInt:
-      if (!f.integer) return false;
-      if (!key.range.contains(f.integer(scene, tool))) return false;  // blank.radial_divisions 0
-      *value = f.integer(scene, tool);
-      return true;
-    case KeyType::kBool:
-      if (!f.flag) return false;
-      *value = f.flag(scene, tool);
-      return true;
-    case KeyType::kString:
-      if (!f.text) return false;
-      *value = f.text(scene, tool);
-      return true;
-    case KeyType::kEnum:
-      if (!f.get_choice) return false;
-      *value = std::string(key.choices.at(static_cast<std::size_t>(f.get_choice(scene, tool))));
-      return true;
-    case KeyType::kFloatArray:
-      if (!f.numbers) return false;
-      *value = f.numbers(scene, tool);
-      return true;
-    case KeyType::kPairArray:
-    case KeyType::kStringArray:
-    case KeyType::kTable:
-      return false;
-  }
-  return false;
-}
-
-// A TOML basic string. Control characters (and DEL) are escaped; a string that is not valid
-// UTF-8 (a path of a folder named in another encoding) cannot be written in TOML at all: its
-// bytes above 0x7F are replaced by U+FFFD (the loader refuses such a value given with --set).
-std::string toml_string(std::string_view raw) {
-  std::string fixed;
-  if (!valid_utf8(raw)) {
-    for (char c : raw) fixed += static_cast<unsigned char>(c) < 0x80 ? std::string(1, c) : "\uFFFD";
-    raw = fixed;
-  }
-  std::string_view text = raw;
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-          out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        } else {
-          out += c;
-        }
     }
+    return key.sticking_alias || key.range.contains(*x);
   }
-  return out + "\"";
+  if (const int* n = std::get_if<int>(value)) return key.range.contains(*n);
+  return true;
 }
 
 }  // namespace
@@ -166,29 +99,6 @@ std::vector<EchoEntry> echo_scene(const Scene& original) {
   return out;
 }
 
-std::string echo_toml_text(const EchoValue& value) {
-  struct Text {
-    std::string operator()(double x) const { return float_toml_text(x); }
-    std::string operator()(int x) const { return std::to_string(x); }
-    std::string operator()(bool x) const { return x ? "true" : "false"; }
-    std::string operator()(const std::string& x) const { return toml_string(x); }
-    std::string operator()(const std::vector<double>& x) const {
-      std::string s = "[";
-      for (std::size_t i = 0; i < x.size(); ++i) s += (i ? ", " : "") + float_toml_text(x[i]);
-      return s + "]";
-    }
-    std::string operator()(const EchoPairs& x) const {
-      std::string s = "[";
-      for (std::size_t i = 0; i < x.size(); ++i) {
-        s += fmt::format("{}[{}, {}]", i ? ", " : "", float_toml_text(x[i][0]),
-                         float_toml_text(x[i][1]));
-      }
-      return s + "]";
-    }
-  };
-  return std::visit(Text{}, value);
-}
-
 std::string scene_toml(const Scene& scene) {
   std::string source = scene.source.empty() ? "(a scene built in code)" : scene.source;
   for (char& c : source) {
@@ -212,7 +122,7 @@ std::string scene_toml(const Scene& scene) {
       out += fmt::format("\n[{}]\n", key.section);
       section = key.section;
     }
-    out += fmt::format("{} = {}\n", key.name, echo_toml_text(e.value));
+    out += fmt::format("{} = {}\n", key.name, key_value_toml(e.value));
   }
   return out;
 }

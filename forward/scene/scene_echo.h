@@ -12,9 +12,7 @@
 // friction coefficient as "sticking".
 #pragma once
 
-#include <array>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "scene/scene.h"
@@ -22,15 +20,10 @@
 
 namespace vs {
 
-using EchoPairs = std::vector<std::array<double, 2>>;
-// double (kFloat), int (kInt), bool, std::string (kString, kEnum, "sticking"), a float array,
-// a pair array.
-using EchoValue = std::variant<double, int, bool, std::string, std::vector<double>, EchoPairs>;
-
 struct EchoEntry {
   const KeySpec* key = nullptr;
-  int tool = -1;  // [[tool]] keys: index into Scene::tools
-  EchoValue value;
+  int tool = -1;   // [[tool]] keys: index into Scene::tools
+  KeyValue value;  // (an infinite friction as the string "sticking")
 };
 
 // Every key that applies to `scene`, in registry order (the tool keys tool by tool).
@@ -39,9 +32,6 @@ std::vector<EchoEntry> echo_scene(const Scene& scene);
 // Registry keys that echo_scene never writes, because the scene holds them in another form
 // (hardening.table_file: the table it was read into is echoed as hardening.table).
 bool echo_skips(const KeySpec& key);
-
-// The TOML text of a value (floats in shortest round-trip form).
-std::string echo_toml_text(const EchoValue& value);
 
 // echo_scene as a scene file.
 std::string scene_toml(const Scene& scene);

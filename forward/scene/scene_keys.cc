@@ -6,6 +6,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "scene/text_checks.h"
+
 namespace vs {
 
 namespace {
@@ -522,6 +524,42 @@ std::vector<KeySpec> build_keys() {
   return keys;
 }
 
+// A TOML basic string. Control characters (and DEL) are escaped; a string that is not valid
+// UTF-8 (a path of a folder named in another encoding) cannot be written in TOML at all: its
+// bytes above 0x7F are replaced by U+FFFD (the loader refuses such a value given with --set).
+std::string toml_string(std::string_view text) {
+  std::string fixed;
+  if (!valid_utf8(text)) {
+    for (char c : text)
+      fixed += static_cast<unsigned char>(c) < 0x80 ? std::string(1, c) : "\uFFFD";
+    text = fixed;
+  }
+  std::string out = "\"";
+  for (char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+          out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
 std::string number_text(double x) {
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
   return fmt::format("{}", x);
@@ -619,39 +657,67 @@ std::string float_toml_text(double x) {
   return s;
 }
 
+bool read_key_value(const KeySpec& key, Scene& scene, ToolSpec& tool, KeyValue* value) {
+  const KeyField& f = key.field;
+  switch (key.type) {
+    case KeyType::kFloat:
+      if (f.number) *value = f.number(scene, tool);
+      return f.number != nullptr;
+    case KeyType::kInt:
+      if (f.integer) *value = f.integer(scene, tool);
+      return f.integer != nullptr;
+    case KeyType::kBool:
+      if (f.flag) *value = f.flag(scene, tool);
+      return f.flag != nullptr;
+    case KeyType::kString:
+      if (f.text) *value = f.text(scene, tool);
+      return f.text != nullptr;
+    case KeyType::kEnum:
+      if (f.get_choice) {
+        *value = std::string(key.choices.at(static_cast<std::size_t>(f.get_choice(scene, tool))));
+      }
+      return f.get_choice != nullptr;
+    case KeyType::kFloatArray:
+      if (f.numbers) *value = f.numbers(scene, tool);
+      return f.numbers != nullptr;
+    case KeyType::kPairArray:
+    case KeyType::kStringArray:
+    case KeyType::kTable:
+      return false;
+  }
+  return false;
+}
+
+std::string key_value_toml(const KeyValue& value) {
+  struct Text {
+    std::string operator()(double x) const { return float_toml_text(x); }
+    std::string operator()(int x) const { return std::to_string(x); }
+    std::string operator()(bool x) const { return x ? "true" : "false"; }
+    std::string operator()(const std::string& x) const { return toml_string(x); }
+    std::string operator()(const std::vector<double>& x) const {
+      std::string s = "[";
+      for (std::size_t i = 0; i < x.size(); ++i) s += (i ? ", " : "") + float_toml_text(x[i]);
+      return s + "]";
+    }
+    std::string operator()(const KeyPairs& x) const {
+      std::string s = "[";
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        s += fmt::format("{}[{}, {}]", i ? ", " : "", float_toml_text(x[i][0]),
+                         float_toml_text(x[i][1]));
+      }
+      return s + "]";
+    }
+  };
+  return std::visit(Text{}, value);
+}
+
 std::string default_toml_text(const KeySpec& key) {
   if (key.required) return "";
   if (key.default_text != nullptr) return key.default_text();
   Scene scene;
-  ToolSpec tool_spec;
-  const KeyField& f = key.field;
-  switch (key.type) {
-    case KeyType::kFloat:
-      return f.number ? float_toml_text(f.number(scene, tool_spec)) : "";
-    case KeyType::kInt:
-      return f.integer ? std::to_string(f.integer(scene, tool_spec)) : "";
-    case KeyType::kBool:
-      return f.flag ? (f.flag(scene, tool_spec) ? "true" : "false") : "";
-    case KeyType::kString:
-      return f.text ? fmt::format("\"{}\"", f.text(scene, tool_spec)) : "";
-    case KeyType::kEnum:
-      return f.get_choice ? fmt::format("\"{}\"", key.choices.at(static_cast<std::size_t>(
-                                                      f.get_choice(scene, tool_spec))))
-                          : "";
-    case KeyType::kFloatArray: {
-      if (!f.numbers) return "";
-      std::string s = "[";
-      for (double x : f.numbers(scene, tool_spec)) {
-        s += (s.size() > 1 ? ", " : "") + float_toml_text(x);
-      }
-      return s + "]";
-    }
-    case KeyType::kPairArray:
-    case KeyType::kStringArray:
-    case KeyType::kTable:
-      return "";
-  }
-  return "";
+  ToolSpec tool;
+  KeyValue value;
+  return read_key_value(key, scene, tool, &value) ? key_value_toml(value) : "";
 }
 
 double default_number(const KeySpec& key) {

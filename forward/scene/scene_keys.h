@@ -5,10 +5,12 @@
 // are read from a default-constructed Scene / ToolSpec (the in-class defaults of scene.h).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "scene/scene.h"
@@ -118,6 +120,19 @@ const VariantSelector* find_selector(std::string_view section);
 
 // Whether `key` is used when its section's selector has the value `variant`.
 bool key_applies(const KeySpec& key, std::string_view variant);
+
+// The value of a key in a scene: double (kFloat), int (kInt), bool, std::string (kString,
+// kEnum), a float array, a pair array.
+using KeyPairs = std::vector<std::array<double, 2>>;
+using KeyValue = std::variant<double, int, bool, std::string, std::vector<double>, KeyPairs>;
+
+// `key`'s value in `scene` (in `tool` for [[tool]] keys) read through its accessor; false if it
+// has none (the keys the loader reads itself: tables, table files).
+bool read_key_value(const KeySpec& key, Scene& scene, ToolSpec& tool, KeyValue* value);
+
+// A value as TOML text: floats in shortest round-trip form ("500.0", "1e-06", "inf"), strings
+// quoted and escaped, arrays in brackets.
+std::string key_value_toml(const KeyValue& value);
 
 // The default value as TOML text ("0.85", "\"pinned\"", "[]"), or "" if the key is required or
 // has no value by default (table, table_file).
