@@ -21,6 +21,8 @@
 // times numerics.tolerance); --start-refinement L: numerics.start_refinement (the scene default
 // is 3 for 3D with the implicit update since 26 Nov 2026; figures before that are with 0);
 // --implicit-solves N: numerics.implicit_solves (velocity solves per implicit step, 2 by default);
+// --contact-entry first_solve|last_solve: numerics.contact_entry (the solve of an implicit step in
+// which new contacts enter);
 // --fine-reference X: each run is also compared with a run of the same 3D mesh at X element lengths
 // per step with contact events and no graded start (its time-stepping error alone, without the
 // mesh's; for X small enough the reference's own error is negligible). --goal: after each run, the
@@ -86,6 +88,7 @@ void print_against_fine_reference(vs::Scene scene, const vs::RunResult& r, doubl
   scene.numerics.contact_events = true;
   scene.numerics.start_refinement = 0;
   scene.numerics.implicit_solves = 2;
+  scene.numerics.contact_entry = vs::ContactEntry::kFirstSolve;
   const auto t0 = std::chrono::steady_clock::now();
   const vs::RunResult ref = vs::shell3d::simulate_shell3d(scene, vs::RunOptions{});
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -132,10 +135,11 @@ struct Args {
   int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
   bool double_preconditioner = false;
   double first_tolerance_factor = vs::StepDriverOptions{}.implicit_first_tolerance_factor;
-  int start_refinement = -1;    // -1: the scene's
-  int implicit_solves = 0;      // 0: the scene's
-  double fine_reference = 0.0;  // > 0: element lengths per step of a same-mesh reference run
-  std::string summarise_dir;    // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
+  int start_refinement = -1;         // -1: the scene's
+  int implicit_solves = 0;           // 0: the scene's
+  bool last_solve_contacts = false;  // --contact-entry last_solve
+  double fine_reference = 0.0;       // > 0: element lengths per step of a same-mesh reference run
+  std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
 
@@ -199,6 +203,12 @@ Args parse(int argc, char** argv) {
         std::fprintf(stderr, "--implicit-solves must be 1, 2 or 3\n");
         std::exit(2);
       }
+    } else if (key == "--contact-entry") {
+      if (value != "first_solve" && value != "last_solve") {
+        std::fprintf(stderr, "--contact-entry must be first_solve or last_solve\n");
+        std::exit(2);
+      }
+      a.last_solve_contacts = value == "last_solve";
     } else if (key == "--fine-reference") {
       a.fine_reference = std::stod(value);
     } else {
@@ -352,6 +362,7 @@ int main(int argc, char** argv) {
   if (args.no_events) base.numerics.contact_events = false;
   if (args.start_refinement >= 0) base.numerics.start_refinement = args.start_refinement;
   if (args.implicit_solves > 0) base.numerics.implicit_solves = args.implicit_solves;
+  if (args.last_solve_contacts) base.numerics.contact_entry = vs::ContactEntry::kLastSolve;
   if (!args.friction.empty()) {
     for (auto& t : base.tools) {
       t.friction = args.friction == "sticking" ? std::numeric_limits<double>::infinity()

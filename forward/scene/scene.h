@@ -187,6 +187,13 @@ enum class FrictionSurface {
   kFace,  // the touching face's velocity v + z dV3/dt (z = -/+ h/2), with the friction's moment
 };
 
+// Implicit update with two or more solves: in which solve a node that reaches a tool during the
+// step first touches it (stepping/step_driver.h, take_implicit_step).
+enum class ContactEntry {
+  kFirstSolve,  // in the first solve's configuration (moved with the start velocity)
+  kLastSolve,   // in the last solve's: free in the velocities that place the end configuration
+};
+
 // Strain evaluation of the 9-node shell (geometry = shell3d; forward/shell3d/shell9.h).
 enum class ShellElementRule {
   kMitc9,           // MITC9 assumed covariant strains (Bucalem-Bathe): no membrane locking
@@ -215,6 +222,9 @@ struct NumericsSpec {
   // solve's velocity carried into the next step (first order in the geometry, a stiff mode damped
   // only by |z|^2 = theta a / (1 + theta a), a = its rate times the step; step_driver.h).
   int implicit_solves = 2;
+  // Implicit update with two or more solves: the solve in which new contacts enter (not those of
+  // sticking tools, which always enter in the first; step_driver.h).
+  ContactEntry contact_entry = ContactEntry::kFirstSolve;
   // Implicit update: end steps at contact events, as the explicit update must (false: a node that
   // reaches a tool within a step touches it at the end of the step).
   bool contact_events = true;

@@ -220,6 +220,7 @@ void AxisymStepper::maintain_contacts(AxisymState& s, const ContactHolds& holds)
     int best = -1;
     double best_gap = std::numeric_limits<double>::infinity();
     for (std::size_t t = 0; t < model_.tools().size(); ++t) {
+      if (holds.defers(model_.tools()[t].sticking())) continue;
       const double g = model_.tools()[t].gap(s.x[i], model_.node_thickness(s, i));
       // Search tolerance: touching, or within a small fraction of the thickness of a tool that
       // a neighbour touches. Without it a node that lifted off by micrometres (a rigid band

@@ -254,6 +254,7 @@ void Shell3dStepper::maintain_contacts(FormingState& s, const ContactHolds& hold
     int best = -1;
     double best_gap = std::numeric_limits<double>::infinity();
     for (int t = 0; t < nt; ++t) {
+      if (holds.defers(model_.tools()[t].sticking())) continue;
       const double g = model_.project(t, s.x[i], s.thickness[i], model_.on_axis(i)).gap;
       // Holes inside a contact patch are filled within a small fraction of the thickness (as
       // the axisymmetric driver does): a node most of whose neighbours touch this tool.
