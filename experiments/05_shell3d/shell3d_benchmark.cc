@@ -10,6 +10,7 @@
 //                     [--cutoff X] [--implicit] [--no-events] [--krylov-min N] [--goal]
 //                     [--double-preconditioner] [--first-tolerance-factor X]
 //                     [--start-refinement L] [--implicit-solves N] [--fine-reference X]
+//                     [--contact-entry first_solve|last_solve]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
@@ -48,6 +49,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -80,7 +82,8 @@ double peak_rss_mb() {
 
 // --fine-reference: the same scene and mesh at `per_length` element lengths per step with contact
 // events and no graded start (the default implicit update otherwise: two solves per step, second
-// order, whatever the run's numerics.implicit_solves), and the deviation of r from
+// order, new contacts in the first solve, whatever the run's numerics.implicit_solves and
+// numerics.contact_entry), and the deviation of r from
 // it at every output travel both reached: force, and the largest nodal |d eps_t| = |ln(h / h_ref)|.
 void print_against_fine_reference(vs::Scene scene, const vs::RunResult& r, double per_length) {
   scene.numerics.time_integration = vs::TimeIntegration::kImplicit;
@@ -135,11 +138,11 @@ struct Args {
   int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
   bool double_preconditioner = false;
   double first_tolerance_factor = vs::StepDriverOptions{}.implicit_first_tolerance_factor;
-  int start_refinement = -1;         // -1: the scene's
-  int implicit_solves = 0;           // 0: the scene's
-  bool last_solve_contacts = false;  // --contact-entry last_solve
-  double fine_reference = 0.0;       // > 0: element lengths per step of a same-mesh reference run
-  std::string summarise_dir;  // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
+  int start_refinement = -1;                      // -1: the scene's
+  int implicit_solves = 0;                        // 0: the scene's
+  std::optional<vs::ContactEntry> contact_entry;  // --contact-entry; empty: the scene's
+  double fine_reference = 0.0;  // > 0: element lengths per step of a same-mesh reference run
+  std::string summarise_dir;    // --summarise DIR: summary.md from DIR/shell3d_study.csv, no runs
   std::string out_dir = std::string(VS_SOURCE_DIR) + "/experiments/05_shell3d/results";
 };
 
@@ -208,7 +211,8 @@ Args parse(int argc, char** argv) {
         std::fprintf(stderr, "--contact-entry must be first_solve or last_solve\n");
         std::exit(2);
       }
-      a.last_solve_contacts = value == "last_solve";
+      a.contact_entry =
+          value == "last_solve" ? vs::ContactEntry::kLastSolve : vs::ContactEntry::kFirstSolve;
     } else if (key == "--fine-reference") {
       a.fine_reference = std::stod(value);
     } else {
@@ -362,7 +366,7 @@ int main(int argc, char** argv) {
   if (args.no_events) base.numerics.contact_events = false;
   if (args.start_refinement >= 0) base.numerics.start_refinement = args.start_refinement;
   if (args.implicit_solves > 0) base.numerics.implicit_solves = args.implicit_solves;
-  if (args.last_solve_contacts) base.numerics.contact_entry = vs::ContactEntry::kLastSolve;
+  if (args.contact_entry) base.numerics.contact_entry = *args.contact_entry;
   if (!args.friction.empty()) {
     for (auto& t : base.tools) {
       t.friction = args.friction == "sticking" ? std::numeric_limits<double>::infinity()

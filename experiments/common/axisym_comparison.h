@@ -16,7 +16,8 @@ namespace vs::shell3d {
 // kTwinTravelIncrementPerLength and its numerics.strain_rate_cutoff at most the default (1e-4):
 // the reference is run converged in the travel step and at the default cut-off even when the 3D
 // scene (or the scene default) relaxes them to save time. Its step grid has the axisymmetric
-// defaults (contact events, no graded start) and two solves per implicit step.
+// defaults (contact events, no graded start), two solves per implicit step and new contacts in the
+// first solve (numerics.contact_entry).
 Scene axisymmetric_twin(const Scene& shell3d_scene, int elements);
 
 // The twin's travel step, in element lengths: 0.025, the explicit update's stability cap and the

@@ -226,7 +226,7 @@ struct NumericsSpec {
   // sticking tools, which always enter in the first; step_driver.h).
   ContactEntry contact_entry = ContactEntry::kFirstSolve;
   // Implicit update: end steps at contact events, as the explicit update must (false: a node that
-  // reaches a tool within a step touches it at the end of the step).
+  // reaches a tool within a step touches it within the step, in the solve of contact_entry).
   bool contact_events = true;
   double tolerance = 1e-6;                // relative velocity change and relative residual
   int max_iterations = 100;               // per step, before the step is cut back

@@ -1,8 +1,9 @@
 // The implicit geometry update's velocity solves (StepDriver::take_implicit_step): each solve
 // starts from the previous one's velocity, every solve but the last stops at the looser
-// StepDriverOptions::implicit_first_tolerance_factor, and numerics.implicit_solves = 1 is first
-// order in the step. Example 1 (hemispherical stretching) at the axisymmetric default (implicit
-// at 0.25 element lengths), 50 elements.
+// StepDriverOptions::implicit_first_tolerance_factor, numerics.implicit_solves = 1 is first
+// order in the step, and numerics.contact_entry = last_solve is exact where nodes touch at the
+// ends of their steps. Example 1 (hemispherical stretching) at the axisymmetric default (implicit
+// at 0.25 element lengths), 50 elements, and a short 24-element case.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,7 +32,7 @@ RunResult Stretch(
 // max_travel_increment_per_length = per_length, with more overrides (the short case of the step
 // tests below).
 RunResult ShortStretch(const char* per_length,
-                       std::vector<std::pair<std::string, std::string>> more) {
+                       const std::vector<std::pair<std::string, std::string>>& more) {
   std::vector<std::pair<std::string, std::string>> set = {
       {"output.history", "false"},       {"blank.elements", "24"},
       {"process.punch_travel_mm", "16"}, {"process.output_travels_mm", "[16.0]"},
