@@ -226,18 +226,17 @@ bool StepDriver<Stepper>::take_step(const Solved& from, double dt, Solved* to, s
 // punch tangentially and touch late in a step (phi mostly 0.8-1 on ex4a at 0.25 element lengths),
 // and with contact events the event node touches at the step's end (phi = 1; but the last
 // configuration can leave it just short of the tool, and tiny follow-up steps take it there: 5-7 %
-// more steps on the axisymmetric examples). Measured
-// against the same mesh at a quarter of the step with events (experiments/05_shell3d, "New
-// contacts in the last solve"): ex4a n = 16, friction 0.2, max |d eps_t| 0.0010 / 0.0020 /
-// 0.0036 at 10 / 20 / 30 mm against 0.0035 / 0.0042 / 0.0108, at the same cost; ex1 (24
-// elements, events) 0.0003 against 0.0016 at 0.2 element lengths. Not the default: where nodes
-// touch early in their steps (a coarse 3D mesh at the first millimetres: ex4a n = 4, 0.5 mm
-// steps, mean force at 4 mm 2.44 % above the axisymmetric twin instead of 1.87 %) the whole-step
-// error (1 - phi) is larger, and choosing per node (attach in the first solve below phi = 1/2) made
-// the outputs jump under 1e-5 changes of friction (4.6e-6 of the force). New contacts with a
-// sticking tool never wait (ContactHolds::defers): a node that touches it stops, and a free step
-// more deepened the neck at the stuck patch's edge (ex1 sticking, 48 elements, 0.444 mm against
-// 0.489 step-converged).
+// more steps on the axisymmetric examples). Measured against the same mesh at a quarter of the
+// step with events (experiments/05_shell3d, "New contacts in the last solve"): ex4a n = 16,
+// friction 0.2, max |d eps_t| 0.0010 / 0.0020 / 0.0036 at 10 / 20 / 30 mm against 0.0035 / 0.0042 /
+// 0.0108, at the same cost; ex1 (24 elements, events) 0.0003 against 0.0016 at 0.2 element lengths.
+// Not the default: where nodes touch early in their steps (a coarse 3D mesh at the first
+// millimetres: ex4a n = 4, 0.5 mm steps, mean force at 4 mm 2.44 % above the axisymmetric twin
+// instead of 1.87 %) the whole-step error (1 - phi) is larger, and choosing per node (attach in the
+// first solve below phi = 1/2) made the outputs jump under 1e-5 changes of friction (4.6e-6 of the
+// force). New contacts with a sticking tool never wait (ContactHolds::defers): a node that touches
+// it stops, and a free step more deepened the neck at the stuck patch's edge (ex1 sticking, 48
+// elements, 0.444 mm against 0.489 step-converged).
 template <class Stepper>
 bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solved* to,
                                              std::string* why) {
@@ -263,10 +262,8 @@ bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solv
   for (int k = 0; k < solves; ++k) {
     const bool last = k + 1 == solves;
     const Solved moving = g_.blend(from, previous, theta);
-    holds_.defer_new = defer && !last;                        // numerics.contact_entry (above)
-    const bool moved = advance(moving, dt, &to->state, why);  // (thickness included)
-    holds_.defer_new = false;
-    if (!moved) return false;
+    holds_.defer_new = defer && !last;  // numerics.contact_entry (above; restore clears it)
+    if (!advance(moving, dt, &to->state, why)) return false;  // (thickness included)
     if (k > 0) {
       // Nodes the previous solve found touching touch here too; attaching moves them, so the
       // thickness is recomputed.
