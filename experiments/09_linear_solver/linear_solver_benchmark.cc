@@ -7,6 +7,8 @@
 //
 //   build/experiments/linear_solver_benchmark [--quick] [--out DIR]
 // Writes results/linear_solver.csv and results/summary.md.
+#include <omp.h>
+
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -103,8 +105,9 @@ int main(int argc, char** argv) {
       "| n | dofs | solver | analyse s | factorise s | solve s | factor nnz | flops |\n"
       "|---|---|---|---|---|---|---|---|\n";
   std::string md_solves =
-      "\n| n | dofs | CHOLMOD solve ms | supernodes, double ms | supernodes, single ms | single vs "
-      "CHOLMOD (rel.) | matrix product ms |\n|---|---|---|---|---|---|---|\n";
+      "\n| n | dofs | CHOLMOD solve ms | supernodes, double ms | supernodes, single ms | single, "
+      "one thread ms | tree cut: top / largest part % | single vs CHOLMOD (rel.) | matrix "
+      "product ms |\n|---|---|---|---|---|---|---|---|---|\n";
   for (int n : divisions) {
     vsx::Overrides ov = {{"blank.divisions", std::to_string(n)}, {"tool.punch.friction", "0.2"}};
     for (const auto& [k, v] : args.sets) ov.push_back({k, v});
@@ -170,14 +173,23 @@ int main(int argc, char** argv) {
       const double d64 = (z - x_ref).norm() / x_ref.norm();
       const double t32 = time_it([&] { f32.solve(b, &z); });
       const double d32 = (z - x_ref).norm() / x_ref.norm();
+      // The single-precision solve on one thread (the tree's parts one after the other).
+      const int threads = omp_get_max_threads();
+      omp_set_num_threads(1);
+      const double t32_1 = time_it([&] { f32.solve(b, &z); });
+      omp_set_num_threads(threads);
       const double tmv = time_it([&] { vs::multiply_symmetric(A, b, &z); });
       fmt::print(
           "n {:2d} dofs {:6d}: solve with the factor: CHOLMOD {:.2f} ms, supernodes in double "
-          "{:.2f} ms (rel. diff {:.1e}), in single {:.2f} ms (rel. diff {:.1e}); matrix product "
-          "{:.2f} ms\n",
-          n, A.rows(), 1e3 * t_cholmod, 1e3 * t64, d64, 1e3 * t32, d32, 1e3 * tmv);
-      md_solves += fmt::format("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1e} | {:.2f} |\n", n,
-                               A.rows(), 1e3 * t_cholmod, 1e3 * t64, 1e3 * t32, d32, 1e3 * tmv);
+          "{:.2f} ms (rel. diff {:.1e}), in single {:.2f} ms on {} threads, {:.2f} ms on one "
+          "(rel. diff {:.1e}; tree cut: top set {:.1f} %, largest of {} parts {:.1f} % of the "
+          "entries); matrix product {:.2f} ms\n",
+          n, A.rows(), 1e3 * t_cholmod, 1e3 * t64, d64, 1e3 * t32, threads, 1e3 * t32_1, d32,
+          100 * f32.top_fraction(), f32.kParts, 100 * f32.largest_part_fraction(), 1e3 * tmv);
+      md_solves += fmt::format(
+          "| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.1f} / {:.1f} | {:.1e} | {:.2f} |\n",
+          n, A.rows(), 1e3 * t_cholmod, 1e3 * t64, 1e3 * t32, 1e3 * t32_1, 100 * f32.top_fraction(),
+          100 * f32.largest_part_fraction(), d32, 1e3 * tmv);
     }
     const long nnz = static_cast<long>(A.nonZeros());
     for (const Row& r : rows) {

@@ -1,8 +1,11 @@
 // The single-precision copy of a CHOLMOD supernodal factor (linalg/supernodal_factor.h):
 // its solve agrees with the double-precision solve to single-precision accuracy (so the
 // permutation and the supernodal traversal are right), and as the preconditioner of conjugate
-// gradients it solves a matrix with a 1e8 stiffness contrast to 1e-10 in a few iterations.
+// gradients it solves a matrix with a 1e8 stiffness contrast to 1e-10 in a few iterations. The
+// solves run the parts of the cut elimination tree in parallel: the same bits on one thread and
+// on several, and a new cut when the factor's structure changes.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <vector>
@@ -73,6 +76,61 @@ TEST(SinglePrecisionFactor, PreconditionsAStiffContrastMatrixToDoublePrecision) 
   EXPECT_LE(iterations, 4);
   const Eigen::VectorXd r = b - A * x;
   EXPECT_LT(r.norm(), 1e-10 * b.norm());
+}
+
+// Restores the OpenMP team size at the end of a test.
+struct Threads {
+  int was = omp_get_max_threads();
+  ~Threads() { omp_set_num_threads(was); }
+};
+
+TEST(SinglePrecisionFactor, ParallelPartsGiveTheSameBitsOnOneThreadAndOnTwo) {
+  Threads keep;
+  const SparseMatrix A = grid_matrix(70, 1.0);  // 4 900 unknowns: above the parallel threshold
+  SparseSpdSolver solver(SparseSolverKind::kCholmodSupernodal);
+  solver.analyze(A);
+  ASSERT_TRUE(solver.factorize(A));
+  ASSERT_NE(solver.held_cholmod_factor(), nullptr);
+  SupernodalFactor<float> f32;
+  SupernodalFactor<double> f64;
+  ASSERT_TRUE(f32.assign(*solver.held_cholmod_factor()));
+  ASSERT_TRUE(f64.assign(*solver.held_cholmod_factor()));
+  // A grid's tree splits: two parts of real work and a small top set.
+  EXPECT_GT(f32.top_fraction(), 0.0);
+  EXPECT_LT(f32.top_fraction(), 0.35);
+  EXPECT_GT(f32.largest_part_fraction(), 0.3);
+  EXPECT_LT(f32.largest_part_fraction(), 0.6);
+  const Eigen::VectorXd b = load(static_cast<int>(A.rows()));
+  const Eigen::VectorXd x = solver.solve(b);
+  Eigen::VectorXd z1, z2, d1, d2;
+  omp_set_num_threads(1);
+  f32.solve(b, &z1);
+  f64.solve(b, &d1);
+  omp_set_num_threads(2);
+  f32.solve(b, &z2);
+  f64.solve(b, &d2);
+  EXPECT_EQ((z1 - z2).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((d1 - d2).cwiseAbs().maxCoeff(), 0.0);
+  // And the traversal is right: the double one is CHOLMOD's solve to round-off.
+  EXPECT_LT((d1 - x).norm(), 1e-12 * x.norm());
+  EXPECT_LT((z1 - x).norm(), 1e-4 * x.norm());
+}
+
+TEST(SinglePrecisionFactor, CutsTheTreeAgainWhenTheStructureChanges) {
+  SupernodalFactor<double> f;
+  for (int m : {60, 45, 60}) {
+    const SparseMatrix A = grid_matrix(m, 1.0);
+    SparseSpdSolver solver(SparseSolverKind::kCholmodSupernodal);
+    solver.analyze(A);
+    ASSERT_TRUE(solver.factorize(A));
+    ASSERT_NE(solver.held_cholmod_factor(), nullptr);
+    ASSERT_TRUE(f.assign(*solver.held_cholmod_factor()));
+    const Eigen::VectorXd b = load(static_cast<int>(A.rows()));
+    const Eigen::VectorXd x = solver.solve(b);
+    Eigen::VectorXd z;
+    f.solve(b, &z);
+    EXPECT_LT((z - x).norm(), 1e-12 * x.norm()) << m;
+  }
 }
 
 TEST(SinglePrecisionFactor, RefusesAFactorThatIsNotSupernodal) {
