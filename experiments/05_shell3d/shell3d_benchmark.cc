@@ -10,14 +10,16 @@
 //                     [--cutoff X] [--implicit] [--no-events] [--krylov-min N] [--goal]
 //                     [--double-preconditioner] [--first-tolerance-factor X]
 //                     [--start-refinement L] [--implicit-solves N] [--fine-reference X]
-//                     [--contact-entry first_solve|last_solve]
+//                     [--contact-entry first_solve|last_solve] [--cholmod-factorisation]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
 // numerics.time_integration = implicit (the reference stays at its defaults); --no-events: with
 // numerics.contact_events = false; --krylov-min N: RunOptions::krylov_min_unknowns (Krylov steps on
 // the held factorisation from N unknowns; a huge N turns them off); --double-preconditioner:
-// RunOptions::single_precision_preconditioner = false; --first-tolerance-factor X:
+// RunOptions::single_precision_preconditioner = false; --cholmod-factorisation:
+// RunOptions::parallel_factorisation = false (every factorisation by CHOLMOD on one thread);
+// --first-tolerance-factor X:
 // StepDriverOptions::implicit_first_tolerance_factor (the implicit update's first solve stops at X
 // times numerics.tolerance); --start-refinement L: numerics.start_refinement (the scene default
 // is 3 for 3D with the implicit update since 26 Nov 2026; figures before that are with 0);
@@ -137,6 +139,7 @@ struct Args {
   bool goal = false;
   int krylov_min = vs::RunOptions{}.krylov_min_unknowns;
   bool double_preconditioner = false;
+  bool cholmod_factorisation = false;
   double first_tolerance_factor = vs::StepDriverOptions{}.implicit_first_tolerance_factor;
   int start_refinement = -1;                      // -1: the scene's
   int implicit_solves = 0;                        // 0: the scene's
@@ -151,8 +154,10 @@ Args parse(int argc, char** argv) {
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--quick" || key == "--speed-setting" || key == "--goal" || key == "--implicit" ||
-        key == "--no-events" || key == "--double-preconditioner") {
+        key == "--no-events" || key == "--double-preconditioner" ||
+        key == "--cholmod-factorisation") {
       if (key == "--double-preconditioner") a.double_preconditioner = true;
+      if (key == "--cholmod-factorisation") a.cholmod_factorisation = true;
       if (key == "--no-events") a.no_events = true;
       if (key == "--quick") a.study = a.quick = true;
       if (key == "--implicit") a.implicit = true;
@@ -413,6 +418,7 @@ int main(int argc, char** argv) {
       vs::RunOptions run_options;
       run_options.krylov_min_unknowns = args.krylov_min;
       run_options.single_precision_preconditioner = !args.double_preconditioner;
+      run_options.parallel_factorisation = !args.cholmod_factorisation;
       run_options.driver.implicit_first_tolerance_factor = args.first_tolerance_factor;
       const vs::RunResult r = vs::shell3d::simulate_shell3d(scene, run_options);
       const double wall =

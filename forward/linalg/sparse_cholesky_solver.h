@@ -19,6 +19,8 @@ class SparseCholeskySolver : public LinearSolver {
   // The preconditioner of solve_preconditioned and solve_approximately_in_place in single
   // precision (SparseSpdSolver).
   void set_single_precision_preconditioner(bool on) { solver_.set_single_precision(on); }
+  // Numeric factorisations on two threads (SparseSpdSolver).
+  void set_parallel_factorisation(bool on) { solver_.set_parallel_factorisation(on); }
 
   bool factorize() override {
     if (solver_.analyses() == 0) solver_.analyze(*A_);

@@ -36,6 +36,15 @@ void SparseSpdSolver::analyze(const SparseMatrix& A) {
 bool SparseSpdSolver::factorize(const SparseMatrix& A) {
   single_current_ = false;
   if (preferred_ == SparseSolverKind::kCholmodSupernodal) {
+    // After CHOLMOD's first factorisation of an analysis (which allocates the factor): ours, on
+    // two threads, into the same factor (linalg/supernodal_cholesky.h).
+    cholmod_factor* L = cholmod_->mutable_factor();
+    if (parallel_factorisation_ && L && (numeric_.fits(*L) || numeric_.analyse(*L)) &&
+        numeric_.factorize(A, L)) {
+      cholmod_->mark_factorised();
+      active_ = SparseSolverKind::kCholmodSupernodal;
+      return true;
+    }
     {
       const DynamicTeams teams;
       cholmod_->factorize(A);

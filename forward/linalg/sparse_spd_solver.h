@@ -22,6 +22,7 @@
 #include <memory>
 
 #include "linalg/sparse_matrix.h"
+#include "linalg/supernodal_cholesky.h"
 #include "linalg/supernodal_factor.h"
 
 namespace vs {
@@ -49,6 +50,10 @@ class SparseSpdSolver {
   // z ~ A^-1 r for a preconditioner: solve(), or the single-precision solves (see above).
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
   void set_single_precision(bool on) { single_precision_ = on; }
+  // With a CHOLMOD factor: every numeric factorisation after the first of an analysis by
+  // SupernodalCholesky (two threads, linalg/supernodal_cholesky.h) into CHOLMOD's factor; one it
+  // refuses (not positive definite) is made again by CHOLMOD (and its fallback). On by default.
+  void set_parallel_factorisation(bool on) { parallel_factorisation_ = on; }
   // CHOLMOD's factor of the last successful factorisation, null if that was not CHOLMOD's.
   const cholmod_factor* held_cholmod_factor() const {
     return active_ == SparseSolverKind::kCholmodSupernodal && cholmod_ ? cholmod_->factor()
@@ -61,10 +66,16 @@ class SparseSpdSolver {
   int fallbacks() const { return fallbacks_; }
 
  private:
-  // Eigen's CHOLMOD wrapper with its factor (a protected member) readable.
+  // Eigen's CHOLMOD wrapper with its factor (a protected member) readable and writable.
   class Cholmod : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
    public:
     const cholmod_factor* factor() const { return m_cholmodFactor; }
+    cholmod_factor* mutable_factor() { return m_cholmodFactor; }
+    // After the factor's values were written by other means.
+    void mark_factorised() {
+      m_info = Eigen::Success;
+      m_factorizationIsOk = true;
+    }
   };
   using Ldlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
   SparseSolverKind requested_, preferred_, active_;  // preferred_: kAuto resolved at analyze()
@@ -74,6 +85,8 @@ class SparseSpdSolver {
   int analyses_ = 0;
   int fallbacks_ = 0;
   bool single_precision_ = true;
+  bool parallel_factorisation_ = true;
+  SupernodalCholesky numeric_;
   mutable SinglePrecisionFactor single_;
   mutable bool single_current_ = false;  // single_ copies the last CHOLMOD factorisation
 };

@@ -23,26 +23,24 @@
 // 16-17 / 6-9 ms.
 //
 // Two threads (the solves run between the parallel assemblies, on one core while the other
-// waited). The supernodal elimination tree (parent of s = the supernode holding the first row
-// below its diagonal block; a parent always comes after its children) is cut into a top set and
-// disjoint subtrees, the subtrees packed into kParts parts of about equal work (entries of L):
+// waited): the elimination tree is cut into a top set and two parts of equal work (entries of L;
+// linalg/tree_cut.h):
 //   forward:  the parts in parallel, each its supernodes ascending; an update of a row of the top
-//             set goes into the part's own accumulator (the rows below a supernode are its
-//             ancestors: in its own subtree or in the top set, never in another part); then the
-//             accumulators are subtracted in part order and the top set is solved ascending;
+//             set goes into the part's own accumulator; then the accumulators are subtracted in
+//             part order and the top set is solved ascending;
 //   backward: the top set descending, then the parts in parallel, each descending (a supernode
 //             reads its ancestors, all final by then, and writes only its own columns).
 // The cut depends only on the factor's structure (kept while that does not change) and the
-// order of every sum is fixed, so the result has the same bits for any number of threads. The
-// cut: starting from the roots, the subtree of largest work is moved to the top set (its
-// children become subtrees) while that lowers the critical path, top work + largest part
-// (longest-processing-time packing), over at most kMaxCuts cuts; the best cut is kept.
+// order of every sum is fixed, so the result has the same bits for any number of threads.
 #pragma once
 
 #include <cholmod.h>
 
 #include <Eigen/Core>
 #include <vector>
+
+#include "linalg/aligned_buffer.h"
+#include "linalg/tree_cut.h"
 
 namespace vs {
 
@@ -58,25 +56,23 @@ class SupernodalFactor {
   // z = (P' L L' P)^-1 r, the solves in Scalar.
   void solve(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
 
-  static constexpr int kParts = 2;
+  static constexpr int kParts = TreeCut::kParts;
   // The cut: the fraction of the factor's entries in the top set and in the largest part.
-  double top_fraction() const { return top_fraction_; }
-  double largest_part_fraction() const { return largest_part_fraction_; }
+  double top_fraction() const { return cut_.top_fraction; }
+  double largest_part_fraction() const { return cut_.largest_part_fraction; }
 
  private:
-  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   void cut_tree();
-  void forward(const std::vector<int>& supernodes, Vector* acc, Vector* work) const;
-  void backward(const std::vector<int>& supernodes, Vector* work) const;
+  void forward(const std::vector<int>& supernodes, Scalar* acc, Scalar* work) const;
+  void backward(const std::vector<int>& supernodes, Scalar* work) const;
 
   int n_ = 0;
   std::vector<int> perm_, super_, pi_, px_, s_;
-  std::vector<Scalar> x_;
-  // The cut (see above): the supernodes of each part and of the top set, ascending; the slot of
-  // every column of the top set in the accumulators (-1 elsewhere).
-  std::vector<int> part_[kParts], top_, slot_, top_columns_;
-  double top_fraction_ = 0.0, largest_part_fraction_ = 0.0;
-  mutable Vector y_, acc_[kParts], work_[kParts];
+  AlignedBuffer<Scalar> x_;  // 64-byte aligned: the same bits wherever the heap puts it
+  TreeCut cut_;
+  // The slot of every column of the top set in the accumulators (-1 elsewhere).
+  std::vector<int> slot_, top_columns_;
+  mutable AlignedBuffer<Scalar> y_, acc_[kParts], work_[kParts];
 };
 
 extern template class SupernodalFactor<float>;

@@ -34,6 +34,10 @@ struct RunOptions {
   // (linalg/supernodal_factor.h) rather than the double one. A Newton step on a matrix
   // just factorised solves in double precision either way.
   bool single_precision_preconditioner = true;
+  // 3D runs: every numeric factorisation after the first of an analysis on two threads
+  // (linalg/supernodal_cholesky.h) rather than by CHOLMOD on one. Same answers to round-off; the
+  // run has the same bits for any number of threads either way.
+  bool parallel_factorisation = true;
   // The step driver's constants (stepping/step_driver_options.h); a run with invalid ones fails
   // at once with the reason.
   StepDriverOptions driver;

@@ -110,6 +110,7 @@ class Shell3dStepper {
     nl_.krylov_max_iterations = model_.num_dofs() >= options.krylov_min_unknowns ? 10 : 0;
     nl_.krylov_tolerance = 1e-2;
     // The single-precision factor with the Krylov steps: below, a run keeps the exact path.
+    linear_.set_parallel_factorisation(options.parallel_factorisation);
     linear_.set_single_precision_preconditioner(options.single_precision_preconditioner &&
                                                 nl_.krylov_max_iterations > 0);
     fields_->mesh = model_.mesh();

@@ -254,6 +254,32 @@ TEST(Forming3d, BitwiseIdenticalForOneAndTwoThreads) {
   }
 }
 
+// The same at 8 divisions (4 085 unknowns), where the linear algebra runs on two threads: the
+// numeric factorisations after the first (linalg/supernodal_cholesky.h), the tree-parallel
+// single-precision solves of the Krylov and chord steps (linalg/supernodal_factor.h).
+TEST(Forming3d, BitwiseIdenticalForOneAndTwoThreadsWithTheParallelLinearAlgebra) {
+  Scene s = comparison_scene(0.2);
+  s.blank.divisions = 8;
+  s.process.punch_travel_mm = 1.0;
+  s.process.output_travels_mm = {1.0};
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const RunResult one = simulate_shell3d(s);
+  omp_set_num_threads(2);
+  const RunResult two = simulate_shell3d(s);
+  omp_set_num_threads(threads);
+  ASSERT_TRUE(one.completed()) << one.message;
+  EXPECT_GT(two.timings.factorisations, 1);
+  EXPECT_GT(two.timings.krylov_steps, 0);
+  ASSERT_EQ(one.steps.size(), two.steps.size());
+  for (std::size_t k = 0; k < one.steps.size(); ++k) {
+    EXPECT_EQ(one.steps[k].punch_force_N, two.steps[k].punch_force_N);
+  }
+  for (std::size_t i = 0; i < one.shell->stages.back().x.size(); ++i) {
+    EXPECT_EQ(one.shell->stages.back().x[i], two.shell->stages.back().x[i]);
+  }
+}
+
 // Nodal frames: orthonormal, third axis = contact normal, circumferential first axis, so that the
 // symmetry planes fix local dof 0 and contact fixes local dof 2 (the 3x3 rotation of section 6.7).
 TEST(Forming3d, NodalFramesAndPrescribedDofs) {
