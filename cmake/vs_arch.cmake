@@ -14,6 +14,14 @@
 # with the SSE ABI: the kernels then load 32-byte packets unaligned. GCC 12 warns that those
 # unaligned packet loads of a Vector2d/Vector3d may read past it (-Warray-bounds); they do not (the
 # partial packets are masked), so that one warning is switched off with the flag.
+# One place where that is not so: Eigen's blocked products, triangular solves and LLT still pack
+# their operands into buffers they fill with aligned 32-byte stores. On the stack (up to
+# EIGEN_STACK_ALLOCATION_LIMIT, 128 KB) those are 32-byte aligned; from the heap (larger buffers,
+# or Eigen's own OpenMP split of a product) only as malloc, 16 bytes, and the store faults. Dense
+# work on large blocks must therefore stay in chunks (linalg/supernodal_cholesky.cc: 96 x 96)
+# and run with Eigen's product split off. Eigen's vectorised loops also round differently
+# (FMA in packets, not one by one) depending on an array's address modulo 32: arrays whose
+# arithmetic must not depend on where the heap puts them live in linalg/aligned_buffer.h.
 set(VS_ARCH "auto" CACHE STRING "Target instruction set: auto, none or a -march value")
 
 include(CheckCXXCompilerFlag)
