@@ -16,6 +16,8 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 namespace vs {
 
@@ -24,8 +26,19 @@ class AlignedBuffer {
  public:
   static constexpr std::size_t kAlignment = 64;
 
+  static_assert(std::is_trivially_copyable_v<T>, "elements are never constructed");
+
   AlignedBuffer() = default;
   explicit AlignedBuffer(std::size_t n) { resize(n); }
+  AlignedBuffer(AlignedBuffer&& o) noexcept
+      : data_(std::move(o.data_)), size_(std::exchange(o.size_, 0)) {}
+  AlignedBuffer& operator=(AlignedBuffer&& o) noexcept {
+    data_ = std::move(o.data_);
+    size_ = std::exchange(o.size_, 0);
+    return *this;
+  }
+  AlignedBuffer(const AlignedBuffer&) = delete;
+  AlignedBuffer& operator=(const AlignedBuffer&) = delete;
 
   // Reallocates when n differs from the size; the contents are then unspecified.
   void resize(std::size_t n) {

@@ -2,8 +2,10 @@
 // problem assembles its matrix into the storage its solver owns, the Newton loop asks the solver
 // to factorise that matrix and to solve with the factorisation. Two implementations:
 //   BlockTridiagSolver (linalg/block_tridiag_solver.h)   the axisymmetric meridian chain, O(n)
-//   SparseCholeskySolver (linalg/sparse_spd_solver.h)       the 3D shell: CHOLMOD supernodal or
-//                                                         Eigen's SimplicialLDLT, analysis once
+//   SparseCholeskySolver (linalg/sparse_cholesky_solver.h)  the 3D shell: CHOLMOD supernodal
+//                                                         (numeric factorisations and solves on
+//                                                         two threads) or Eigen's SimplicialLDLT,
+//                                                         analysis once
 // Only the problem knows the matrix type; the loop knows analyse / factorise / solve / info.
 // A solver may also solve the matrix the problem last assembled iteratively, preconditioned by
 // the factorisation it holds (of an earlier matrix): solve_preconditioned, the Krylov step of

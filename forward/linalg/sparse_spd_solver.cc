@@ -39,7 +39,7 @@ bool SparseSpdSolver::factorize(const SparseMatrix& A) {
     // After CHOLMOD's first factorisation of an analysis (which allocates the factor): ours, on
     // two threads, into the same factor (linalg/supernodal_cholesky.h).
     cholmod_factor* L = cholmod_->mutable_factor();
-    if (parallel_factorisation_ && L && (numeric_.fits(*L) || numeric_.analyse(*L)) &&
+    if (parallel_factorisation_ && L && (numeric_.fits(*L) || numeric_.analyze(*L)) &&
         numeric_.factorize(A, L)) {
       cholmod_->mark_factorised();
       active_ = SparseSolverKind::kCholmodSupernodal;

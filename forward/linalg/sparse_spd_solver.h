@@ -12,6 +12,11 @@
 // dofs 154 / 68 ms.
 // CHOLMOD's own messages are off (its "matrix not positive definite" warning printed a line per
 // refused factorisation: 4 789 lines in one 3D cup run); fallbacks() counts the refusals instead.
+// Every numeric factorisation after CHOLMOD's first of an analysis is the two-thread one of
+// linalg/supernodal_cholesky.h, written into CHOLMOD's factor (set_parallel_factorisation): it
+// reads both triangles of the matrix (the same matrix to round-off). One it refuses (not positive
+// definite, not finite, or a pattern outside the analysed one) is made again by CHOLMOD, and a
+// refusal by CHOLMOD too goes to the fallback and is counted.
 // precondition() applies the inverse of the held factorisation as a preconditioner: with a CHOLMOD
 // factor and single_precision set (the default), through a single-precision copy of the factor
 // (linalg/supernodal_factor.h), made at the first call after each factorisation.

@@ -2,17 +2,12 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 namespace vs {
 
 namespace {
-
-template <typename T>
-std::vector<T> copy_array(const void* p, size_t n) {
-  const T* a = static_cast<const T*>(p);
-  return std::vector<T>(a, a + n);
-}
 
 using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 using ConstBlock = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
@@ -82,9 +77,6 @@ bool cholesky_in_place(Ref A) {
   return true;
 }
 
-// Below this many unknowns the parts run on the calling thread (the same arithmetic).
-constexpr int kParallelFrom = 2000;
-
 // Eigen's own OpenMP split of a product, which it makes outside a parallel region, is off while
 // this lives: that split packs into shared heap buffers (the fault above), and the top set's
 // products run on the calling thread like the parts' (the same arithmetic for any team). 0
@@ -96,40 +88,19 @@ struct SerialEigenProducts {
   SerialEigenProducts& operator=(const SerialEigenProducts&) = delete;
 };
 
-bool is_real_supernodal_ll(const cholmod_factor& L) {
-  return L.is_super && L.is_ll && L.itype == CHOLMOD_INT && L.xtype == CHOLMOD_REAL &&
-         L.dtype == CHOLMOD_DOUBLE && L.x != nullptr;
-}
-
 }  // namespace
 
 bool SupernodalCholesky::fits(const cholmod_factor& L) const {
-  if (n_ == 0 || !is_real_supernodal_ll(L) || static_cast<int>(L.n) != n_ ||
-      static_cast<int>(L.nsuper) != st_.num_supernodes() ||
-      static_cast<size_t>(L.ssize) != st_.s.size()) {
-    return false;
-  }
-  const size_t ns = L.nsuper + 1;
-  return std::equal(perm_.begin(), perm_.end(), static_cast<const int*>(L.Perm)) &&
-         std::equal(st_.super.begin(), st_.super.end(), static_cast<const int*>(L.super)) &&
-         std::equal(st_.pi.begin(), st_.pi.end(), static_cast<const int*>(L.pi)) &&
-         std::equal(px_.begin(), px_.end(), static_cast<const int*>(L.px)) &&
-         std::equal(st_.s.begin(), st_.s.end(), static_cast<const int*>(L.s)) && ns == px_.size();
+  return n_ > 0 && SupernodalStructure::readable(L) && st_.matches(L);
 }
 
-bool SupernodalCholesky::analyse(const cholmod_factor& L) {
+bool SupernodalCholesky::analyze(const cholmod_factor& L) {
   n_ = 0;
-  if (!is_real_supernodal_ll(L)) return false;
+  if (!SupernodalStructure::readable(L)) return false;
   const int n = static_cast<int>(L.n);
-  const size_t nsuper = L.nsuper;
-  perm_ = copy_array<int>(L.Perm, L.n);
+  st_.assign(L);
   inverse_perm_.assign(static_cast<size_t>(n), 0);
-  for (int i = 0; i < n; ++i) inverse_perm_[perm_[i]] = i;
-  st_.n = n;
-  st_.super = copy_array<int>(L.super, nsuper + 1);
-  st_.pi = copy_array<int>(L.pi, nsuper + 1);
-  st_.s = copy_array<int>(L.s, L.ssize);
-  px_ = copy_array<int>(L.px, nsuper + 1);
+  for (int i = 0; i < n; ++i) inverse_perm_[st_.perm[i]] = i;
   const int ns = st_.num_supernodes();
   const std::vector<int> of = st_.column_supernodes();
 
@@ -141,7 +112,7 @@ bool SupernodalCholesky::analyse(const cholmod_factor& L) {
   std::vector<double> work(static_cast<size_t>(ns), 0.0);
   for (int d = 0; d < ns; ++d) {
     const int nscol = st_.columns(d), nsrow = st_.rows(d);
-    const int* rows = st_.s.data() + st_.pi[d];
+    const int* rows = st_.row_indices(d);
     if (!std::is_sorted(rows, rows + nsrow)) return false;
     work[d] += nscol * static_cast<double>(nscol) * nscol / 3.0 +
                static_cast<double>(nscol) * nscol * (nsrow - nscol);
@@ -152,7 +123,7 @@ bool SupernodalCholesky::analyse(const cholmod_factor& L) {
       u.p1 = p;
       u.p2 = p;
       while (u.p2 < nsrow && rows[u.p2] < st_.super[u.j + 1]) ++u.p2;
-      const int* target = st_.s.data() + st_.pi[u.j];
+      const int* target = st_.row_indices(u.j);
       const int target_rows = st_.rows(u.j);
       u.rel.reserve(static_cast<size_t>(nsrow - p));
       int t = 0;
@@ -191,33 +162,37 @@ bool SupernodalCholesky::analyse(const cholmod_factor& L) {
   return true;
 }
 
-void SupernodalCholesky::assemble(const SparseMatrix& A, int j, double* block,
-                                  Workspace* w) const {
+bool SupernodalCholesky::assemble(const SparseMatrix& A, int j, double* block, Workspace* w) const {
   const int k1 = st_.super[j], nscol = st_.columns(j), nsrow = st_.rows(j);
-  const int* rows = st_.s.data() + st_.pi[j];
+  const int* rows = st_.row_indices(j);
   std::fill(block, block + static_cast<size_t>(nsrow) * nscol, 0.0);
   for (int t = 0; t < nsrow; ++t) w->local[rows[t]] = t;
   for (int c = 0; c < nscol; ++c) {
     const int k = k1 + c;
     double* column = block + static_cast<size_t>(c) * nsrow;
-    for (SparseMatrix::InnerIterator it(A, perm_[k]); it; ++it) {
+    for (SparseMatrix::InnerIterator it(A, st_.perm[k]); it; ++it) {
       const int i = inverse_perm_[it.row()];
-      if (i >= k) column[w->local[i]] += it.value();
+      if (i < k) continue;
+      // An entry outside L's structure (A's pattern not the analysed one): refuse.
+      const int t = w->local[i];
+      if (t >= nsrow || rows[t] != i) return false;
+      column[t] += it.value();
     }
   }
+  return true;
 }
 
 void SupernodalCholesky::apply(const Update& u, const double* x, double* target,
                                Workspace* w) const {
   const int nsrow_d = st_.rows(u.d), nscol_d = st_.columns(u.d);
   const int m1 = u.p2 - u.p1, m2 = nsrow_d - u.p1;
-  const ConstBlock Ld(x + px_[u.d], nsrow_d, nscol_d, Eigen::OuterStride<>(nsrow_d));
+  const ConstBlock Ld(x + st_.px[u.d], nsrow_d, nscol_d, Eigen::OuterStride<>(nsrow_d));
   // C = -L_d[p1:, :] L_d[p1:p2, :]'
   Block C(w->C.data(), m2, m1, Eigen::OuterStride<>(m2));
   C.setZero();
   subtract_product(C, Ld.middleRows(u.p1, m2), Ld.middleRows(u.p1, m1), false);
   const int nsrow_j = st_.rows(u.j), k1 = st_.super[u.j];
-  const int* rows = st_.s.data() + st_.pi[u.d] + u.p1;
+  const int* rows = st_.row_indices(u.d) + u.p1;
   for (int cc = 0; cc < m1; ++cc) {
     double* column = target + static_cast<size_t>(rows[cc] - k1) * nsrow_j;
     for (int rr = cc; rr < m2; ++rr) column[u.rel[rr]] += C(rr, cc);
@@ -226,8 +201,11 @@ void SupernodalCholesky::apply(const Update& u, const double* x, double* target,
 
 bool SupernodalCholesky::factor_block(int j, double* x) const {
   const int nscol = st_.columns(j), nsrow = st_.rows(j), nb = nsrow - nscol;
-  Block B(x + px_[j], nsrow, nscol, Eigen::OuterStride<>(nsrow));
-  if (!cholesky_in_place(B.topRows(nscol))) return false;
+  Block B(x + st_.px[j], nsrow, nscol, Eigen::OuterStride<>(nsrow));
+  // Eigen's LLT refuses a pivot <= 0 only: a NaN one would pass.
+  if (!cholesky_in_place(B.topRows(nscol)) || !B.topRows(nscol).diagonal().allFinite()) {
+    return false;
+  }
   // The strictly upper part of the diagonal block is not part of the factor: zero, as CHOLMOD's.
   B.topRows(nscol).triangularView<Eigen::StrictlyUpper>().setZero();
   if (nb > 0) solve_right_transposed(B.topRows(nscol), B.bottomRows(nb));
@@ -236,7 +214,7 @@ bool SupernodalCholesky::factor_block(int j, double* x) const {
 
 void SupernodalCholesky::copy_block(int j, double* to) const {
   const size_t size = static_cast<size_t>(st_.rows(j)) * st_.columns(j);
-  std::memcpy(to + px_[j], x_.data() + px_[j], size * sizeof(double));
+  std::memcpy(to + st_.px[j], x_.data() + st_.px[j], size * sizeof(double));
 }
 
 bool SupernodalCholesky::factorize(const SparseMatrix& A, cholmod_factor* L) {
@@ -244,18 +222,23 @@ bool SupernodalCholesky::factorize(const SparseMatrix& A, cholmod_factor* L) {
   const SerialEigenProducts serial;
   double* x = x_.data();
   double* to = static_cast<double*>(L->x);
-  std::array<char, TreeCut::kParts> ok{};
-#pragma omp parallel for schedule(static, 1) if (n_ >= kParallelFrom)
+  // A part that fails stops the other (which then ends with its work unfinished: the whole
+  // factorisation is refused either way).
+  std::atomic<bool> failed{false};
+#pragma omp parallel for schedule(static, 1) if (n_ >= SupernodalStructure::kParallelFrom)
   for (int p = 0; p < TreeCut::kParts; ++p) {
     Workspace& w = workspace_[p];
     std::fill(buffer_[p].begin(), buffer_[p].end(), 0.0);
-    ok[p] = 1;
     for (int j : cut_.part[p]) {
-      double* block = x + px_[j];
-      assemble(A, j, block, &w);
-      for (int u : into_[j]) apply(updates_[u], x, block, &w);  // all from this part
-      if (!factor_block(j, x)) {
-        ok[p] = 0;
+      if (failed.load(std::memory_order_relaxed)) break;
+      double* block = x + st_.px[j];
+      bool ok = assemble(A, j, block, &w);
+      if (ok) {
+        for (int u : into_[j]) apply(updates_[u], x, block, &w);  // all from this part
+        ok = factor_block(j, x);
+      }
+      if (!ok) {
+        failed.store(true, std::memory_order_relaxed);
         break;
       }
       for (int u : from_[j]) {
@@ -265,11 +248,11 @@ bool SupernodalCholesky::factorize(const SparseMatrix& A, cholmod_factor* L) {
       copy_block(j, to);
     }
   }
-  if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+  if (failed.load()) return false;
   Workspace& w = workspace_[0];
   for (int j : cut_.top) {
-    double* block = x + px_[j];
-    assemble(A, j, block, &w);
+    double* block = x + st_.px[j];
+    if (!assemble(A, j, block, &w)) return false;
     const size_t size = static_cast<size_t>(st_.rows(j)) * st_.columns(j);
     for (int p = 0; p < TreeCut::kParts; ++p) {
       const double* b = buffer_[p].data() + top_offset_[j];

@@ -1,9 +1,9 @@
 // The numeric supernodal Cholesky factorisation P A P' = L L' on two threads, written into the
-// storage of a CHOLMOD supernodal factor (cholmod_factor: super, pi, px, s, x; the layout of
-// linalg/supernodal_factor.h), so that CHOLMOD's solves and everything that reads its factor
-// work on the result. CHOLMOD 3's own factorisation runs on one thread (its BLAS is kept on the
-// calling thread, linalg/blas_library.h) while the second core waits: measured on the ex4a
-// quarter disc, 36 ms of every 14 s run to 10 mm at n = 16 in 60 factorisations.
+// storage of a CHOLMOD supernodal factor (linalg/supernodal_structure.h), so that CHOLMOD's
+// solves and everything that reads its factor work on the result. CHOLMOD 3's own factorisation
+// runs on one thread (its BLAS is kept on the calling thread, linalg/blas_library.h) while the
+// second core waits: on the ex4a quarter disc at n = 16, 60 factorisations of 33 ms, 2 s of a
+// 14 s run to 10 mm (experiments/09_linear_solver).
 //
 // Left-looking, supernode by supernode (as CHOLMOD's t_cholmod_super_numeric): supernode j's
 // block (nsrow x nscol, column-major) is cleared, A's lower entries of its columns are scattered
@@ -29,6 +29,7 @@
 
 #include "linalg/aligned_buffer.h"
 #include "linalg/sparse_matrix.h"
+#include "linalg/supernodal_structure.h"
 #include "linalg/tree_cut.h"
 
 namespace vs {
@@ -38,13 +39,14 @@ class SupernodalCholesky {
   // Takes the structure of a supernodal LL' factor (int indices, real double values allocated,
   // i.e. after one CHOLMOD factorisation) and builds the schedule; false (and holds nothing) for
   // any other kind of factor.
-  bool analyse(const cholmod_factor& L);
-  bool analysed() const { return n_ > 0; }
-  // Whether L has the structure analyse() took (the same object, pattern and ordering).
+  bool analyze(const cholmod_factor& L);
+  bool analyzed() const { return n_ > 0; }
+  // Whether L has the structure analyze() took (the same pattern and ordering; any object).
   bool fits(const cholmod_factor& L) const;
-  // Overwrites L.x with the factor of P A P', A symmetric in full storage with the pattern the
-  // structure was analysed for. False if a diagonal block is not positive definite (L.x is then
-  // partly overwritten: the caller factorises again by other means).
+  // Overwrites L.x with the factor of P A P', A symmetric in full storage (both triangles are
+  // read: an entry (i, k) of P A P' with i >= k from column perm[k]). False if a diagonal block is
+  // not positive definite (or not finite), or if A has an entry outside L's structure; L.x is then
+  // partly overwritten and the caller factorises again by other means.
   bool factorize(const SparseMatrix& A, cholmod_factor* L);
 
   const TreeCut& cut() const { return cut_; }
@@ -60,15 +62,14 @@ class SupernodalCholesky {
     std::vector<int> local;  // row -> its index in the block being assembled
     AlignedBuffer<double> C;
   };
-  void assemble(const SparseMatrix& A, int j, double* block, Workspace* w) const;
+  bool assemble(const SparseMatrix& A, int j, double* block, Workspace* w) const;
   void apply(const Update& u, const double* x, double* target, Workspace* w) const;
   bool factor_block(int j, double* x) const;
   void copy_block(int j, double* to) const;
 
   int n_ = 0;
-  std::vector<int> perm_, inverse_perm_;
   SupernodalStructure st_;
-  std::vector<int> px_;
+  std::vector<int> inverse_perm_;
   // The factor is computed here, 64-byte aligned (linalg/aligned_buffer.h: its bits then do not
   // depend on where CHOLMOD's array lies), in CHOLMOD's layout, and each block copied to L.x.
   AlignedBuffer<double> x_;

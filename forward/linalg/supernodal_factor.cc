@@ -4,35 +4,12 @@
 
 namespace vs {
 
-namespace {
-
-template <typename T>
-std::vector<T> copy_array(const void* p, size_t n) {
-  const T* a = static_cast<const T*>(p);
-  return std::vector<T>(a, a + n);
-}
-
-}  // namespace
-
 template <typename Scalar>
 bool SupernodalFactor<Scalar>::assign(const cholmod_factor& L) {
   n_ = 0;
-  if (!L.is_super || !L.is_ll || L.itype != CHOLMOD_INT || L.xtype != CHOLMOD_REAL ||
-      L.dtype != CHOLMOD_DOUBLE || L.x == nullptr) {
-    return false;
-  }
-  const size_t nsuper = L.nsuper;
-  const bool same_structure =
-      perm_ == copy_array<int>(L.Perm, L.n) && super_ == copy_array<int>(L.super, nsuper + 1) &&
-      pi_ == copy_array<int>(L.pi, nsuper + 1) && px_ == copy_array<int>(L.px, nsuper + 1) &&
-      s_ == copy_array<int>(L.s, L.ssize);
-  if (!same_structure) {
-    perm_ = copy_array<int>(L.Perm, L.n);
-    super_ = copy_array<int>(L.super, nsuper + 1);
-    pi_ = copy_array<int>(L.pi, nsuper + 1);
-    px_ = copy_array<int>(L.px, nsuper + 1);
-    s_ = copy_array<int>(L.s, L.ssize);
-  }
+  if (!SupernodalStructure::readable(L)) return false;
+  const bool same_structure = st_.matches(L);
+  if (!same_structure) st_.assign(L);
   const double* x = static_cast<const double*>(L.x);
   x_.resize(L.xsize);
   std::transform(x, x + L.xsize, x_.data(), [](double v) { return static_cast<Scalar>(v); });
@@ -45,19 +22,14 @@ bool SupernodalFactor<Scalar>::assign(const cholmod_factor& L) {
 
 template <typename Scalar>
 void SupernodalFactor<Scalar>::cut_tree() {
-  SupernodalStructure st;
-  st.n = n_;
-  st.super = super_;
-  st.pi = pi_;
-  st.s = s_;
-  std::vector<double> entries(static_cast<size_t>(st.num_supernodes()));
-  for (int j = 0; j < st.num_supernodes(); ++j)
-    entries[j] = static_cast<double>(st.rows(j)) * st.columns(j);
-  cut_ = vs::cut_tree(st.parents(), entries);
+  std::vector<double> entries(static_cast<size_t>(st_.num_supernodes()));
+  for (int j = 0; j < st_.num_supernodes(); ++j)
+    entries[j] = static_cast<double>(st_.rows(j)) * st_.columns(j);
+  cut_ = vs::cut_tree(st_.parents(), entries);
   slot_.assign(static_cast<size_t>(n_), -1);
   top_columns_.clear();
   for (int j : cut_.top)
-    for (int k = super_[j]; k < super_[j + 1]; ++k) {
+    for (int k = st_.super[j]; k < st_.super[j + 1]; ++k) {
       slot_[k] = static_cast<int>(top_columns_.size());
       top_columns_.push_back(k);
     }
@@ -73,10 +45,10 @@ void SupernodalFactor<Scalar>::forward(const std::vector<int>& supernodes, Scala
   if (acc) std::fill(acc, acc + top_columns_.size(), Scalar(0));
   Vector y(y_.data(), n_);
   for (int s : supernodes) {
-    const int k1 = super_[s], nscol = super_[s + 1] - k1;
-    const int nsrow = pi_[s + 1] - pi_[s], nb = nsrow - nscol;
-    const int* rows = s_.data() + pi_[s];
-    const ConstBlock Ls(x_.data() + px_[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
+    const int k1 = st_.super[s], nscol = st_.columns(s);
+    const int nsrow = st_.rows(s), nb = nsrow - nscol;
+    const int* rows = st_.row_indices(s);
+    const ConstBlock Ls(x_.data() + st_.px[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
     auto ys = y.segment(k1, nscol);
     Ls.topRows(nscol).template triangularView<Eigen::Lower>().solveInPlace(ys);
     if (nb > 0) {
@@ -102,10 +74,10 @@ void SupernodalFactor<Scalar>::backward(const std::vector<int>& supernodes, Scal
   Vector y(y_.data(), n_);
   for (auto it = supernodes.rbegin(); it != supernodes.rend(); ++it) {
     const int s = *it;
-    const int k1 = super_[s], nscol = super_[s + 1] - k1;
-    const int nsrow = pi_[s + 1] - pi_[s], nb = nsrow - nscol;
-    const int* rows = s_.data() + pi_[s];
-    const ConstBlock Ls(x_.data() + px_[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
+    const int k1 = st_.super[s], nscol = st_.columns(s);
+    const int nsrow = st_.rows(s), nb = nsrow - nscol;
+    const int* rows = st_.row_indices(s);
+    const ConstBlock Ls(x_.data() + st_.px[s], nsrow, nscol, Eigen::OuterStride<>(nsrow));
     auto ys = y.segment(k1, nscol);
     if (nb > 0) {
       Vector w(work, nb);
@@ -118,20 +90,19 @@ void SupernodalFactor<Scalar>::backward(const std::vector<int>& supernodes, Scal
 
 template <typename Scalar>
 void SupernodalFactor<Scalar>::solve(const Eigen::VectorXd& r, Eigen::VectorXd* z) const {
-  for (int i = 0; i < n_; ++i) y_[i] = static_cast<Scalar>(r[perm_[i]]);
-  // Forward: L y = P r, the parts in parallel, then their top-set updates in part order and the
-  // top set; backward: L' x = y, the top set, then the parts in parallel.
-  constexpr int kParallelFrom = 2000;  // unknowns; only the team size depends on it, not the bits
-#pragma omp parallel for schedule(static, 1) if (n_ >= kParallelFrom)
+  for (int i = 0; i < n_; ++i) y_[i] = static_cast<Scalar>(r[st_.perm[i]]);
+    // Forward: L y = P r, the parts in parallel, then their top-set updates in part order and the
+    // top set; backward: L' x = y, the top set, then the parts in parallel.
+#pragma omp parallel for schedule(static, 1) if (n_ >= SupernodalStructure::kParallelFrom)
   for (int p = 0; p < kParts; ++p) forward(cut_.part[p], acc_[p].data(), work_[p].data());
   for (int p = 0; p < kParts; ++p)
     for (size_t k = 0; k < top_columns_.size(); ++k) y_[top_columns_[k]] -= acc_[p][k];
   forward(cut_.top, nullptr, work_[0].data());
   backward(cut_.top, work_[0].data());
-#pragma omp parallel for schedule(static, 1) if (n_ >= kParallelFrom)
+#pragma omp parallel for schedule(static, 1) if (n_ >= SupernodalStructure::kParallelFrom)
   for (int p = 0; p < kParts; ++p) backward(cut_.part[p], work_[p].data());
   z->resize(n_);
-  for (int i = 0; i < n_; ++i) (*z)[perm_[i]] = static_cast<double>(y_[i]);
+  for (int i = 0; i < n_; ++i) (*z)[st_.perm[i]] = static_cast<double>(y_[i]);
 }
 
 template class SupernodalFactor<float>;

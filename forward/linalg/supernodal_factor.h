@@ -18,9 +18,10 @@
 // that is ~1e-1 at worst, a contraction CG removes in a step or two. The conjugate-gradient
 // recurrences themselves stay in double precision. What it buys: the triangular solves stream the
 // factor once forward and once backward, and they are bound by that traffic (2e6 entries at
-// n = 16 in ex4a, 1.1e7 at n = 32). Measured (experiments/09_linear_solver, warm): n = 16
-// CHOLMOD's solve 1.96-2.15 ms, this traversal in double 1.5 ms, in single 0.86 ms; n = 32: 23-26 /
-// 16-17 / 6-9 ms.
+// n = 16 in ex4a, 1.1e7 at n = 32). Measured on one thread (experiments/09_linear_solver, warm):
+// n = 16 CHOLMOD's solve 1.96-2.15 ms, this traversal in double 1.5 ms, in single 0.86 ms; n = 32:
+// 23-26 / 16-17 / 6-9 ms. On two threads (below) the single-precision one takes 0.46-0.49 ms at
+// n = 16 and 2.75-2.82 ms at n = 32.
 //
 // Two threads (the solves run between the parallel assemblies, on one core while the other
 // waited): the elimination tree is cut into a top set and two parts of equal work (entries of L;
@@ -40,6 +41,7 @@
 #include <vector>
 
 #include "linalg/aligned_buffer.h"
+#include "linalg/supernodal_structure.h"
 #include "linalg/tree_cut.h"
 
 namespace vs {
@@ -67,7 +69,7 @@ class SupernodalFactor {
   void backward(const std::vector<int>& supernodes, Scalar* work) const;
 
   int n_ = 0;
-  std::vector<int> perm_, super_, pi_, px_, s_;
+  SupernodalStructure st_;
   AlignedBuffer<Scalar> x_;  // 64-byte aligned: the same bits wherever the heap puts it
   TreeCut cut_;
   // The slot of every column of the top set in the accumulators (-1 elsewhere).

@@ -4,21 +4,6 @@
 
 namespace vs {
 
-std::vector<int> SupernodalStructure::column_supernodes() const {
-  std::vector<int> of(static_cast<size_t>(n));
-  for (int j = 0; j < num_supernodes(); ++j)
-    for (int k = super[j]; k < super[j + 1]; ++k) of[k] = j;
-  return of;
-}
-
-std::vector<int> SupernodalStructure::parents() const {
-  const std::vector<int> of = column_supernodes();
-  std::vector<int> parent(static_cast<size_t>(num_supernodes()));
-  for (int j = 0; j < num_supernodes(); ++j)
-    parent[j] = rows(j) > columns(j) ? of[s[pi[j] + columns(j)]] : -1;
-  return parent;
-}
-
 TreeCut cut_tree(const std::vector<int>& parent, const std::vector<double>& work) {
   constexpr int kParts = TreeCut::kParts;
   const int ns = static_cast<int>(parent.size());

@@ -5,30 +5,17 @@
 // by the triangular solves (linalg/supernodal_factor.h, work = entries of L) and by the numeric
 // factorisation (linalg/supernodal_cholesky.h, work = flops).
 //
-// The cut: starting from the roots, the subtree of largest work is moved to the top set (its
-// children become subtrees) while that lowers the critical path, top work + largest part
-// (longest-processing-time packing), over at most kMaxCuts cuts; the best cut is kept. It depends
-// only on the structure and the work, never on the number of threads.
+// The cut: starting from the roots, the subtree of largest work is moved to the top set again and
+// again (its children become subtrees), at most kMaxCuts times or until that subtree is a single
+// supernode; of these cuts the one with the shortest critical path, top work + largest part
+// (longest-processing-time packing), is kept. It depends only on the tree and the work, never on
+// the number of threads. The parents: SupernodalStructure::parents (linalg/supernodal_structure.h).
 #pragma once
 
 #include <array>
 #include <vector>
 
 namespace vs {
-
-// The structure of a supernodal factor as CHOLMOD stores it (cholmod_factor: super, pi, s).
-struct SupernodalStructure {
-  int n = 0;
-  std::vector<int> super, pi, s;
-  int num_supernodes() const { return static_cast<int>(super.size()) - 1; }
-  int columns(int j) const { return super[j + 1] - super[j]; }
-  int rows(int j) const { return pi[j + 1] - pi[j]; }
-  // Parent of every supernode (the supernode holding its first row below the diagonal block;
-  // -1 for a root). A parent always comes after its children.
-  std::vector<int> parents() const;
-  // The supernode of every column.
-  std::vector<int> column_supernodes() const;
-};
 
 struct TreeCut {
   static constexpr int kParts = 2;

@@ -109,8 +109,8 @@ class Shell3dStepper {
     // most 10 / 16 / 24 iterations, 16.2 / 16.6 / 16.4 s to 10 mm.
     nl_.krylov_max_iterations = model_.num_dofs() >= options.krylov_min_unknowns ? 10 : 0;
     nl_.krylov_tolerance = 1e-2;
-    // The single-precision factor with the Krylov steps: below, a run keeps the exact path.
     linear_.set_parallel_factorisation(options.parallel_factorisation);
+    // The single-precision factor with the Krylov steps: below, a run keeps the exact path.
     linear_.set_single_precision_preconditioner(options.single_precision_preconditioner &&
                                                 nl_.krylov_max_iterations > 0);
     fields_->mesh = model_.mesh();

@@ -2,14 +2,17 @@
 // factor CHOLMOD computes, to round-off; solves with it; the same bits on one thread and on two;
 // a matrix that is not positive definite is refused (and SparseSpdSolver then falls back); the
 // tree cut gives both parts work.
+#include "linalg/supernodal_cholesky.h"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "linalg/sparse_spd_solver.h"
-#include "linalg/supernodal_cholesky.h"
 
 namespace vs {
 namespace {
@@ -55,13 +58,35 @@ struct Threads {
   ~Threads() { omp_set_num_threads(was); }
 };
 
+// CHOLMOD's factor of A in a wrapper whose factor is writable.
+struct Wrapper : Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
+  cholmod_factor* factor() { return m_cholmodFactor; }
+};
+
+// Largest difference between the lower triangles of two factors' blocks, and the largest entry.
+std::pair<double, double> factor_difference(const cholmod_factor& L, const double* a,
+                                            const double* b) {
+  const int* super = static_cast<const int*>(L.super);
+  const int* pi = static_cast<const int*>(L.pi);
+  const int* px = static_cast<const int*>(L.px);
+  double diff = 0.0, largest = 0.0;
+  for (size_t s = 0; s < L.nsuper; ++s) {
+    const int nscol = super[s + 1] - super[s], nsrow = pi[s + 1] - pi[s];
+    for (int c = 0; c < nscol; ++c)
+      for (int r = c; r < nsrow; ++r) {
+        const size_t k = static_cast<size_t>(px[s]) + static_cast<size_t>(c) * nsrow + r;
+        largest = std::max(largest, std::abs(a[k]));
+        diff = std::max(diff, std::abs(a[k] - b[k]));
+      }
+  }
+  return {diff, largest};
+}
+
 TEST(SupernodalCholesky, ReproducesCholmodsFactorAndGivesTheSameBitsOnAnyTeam) {
   Threads keep;
   const SparseMatrix A = plate_matrix(40, 1e-3);  // 4 800 unknowns
   // CHOLMOD's factorisation, then ours into the same storage.
-  struct Wrapper : Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Upper> {
-    cholmod_factor* factor() { return m_cholmodFactor; }
-  } cholmod;
+  Wrapper cholmod;
   cholmod.compute(A);
   ASSERT_EQ(cholmod.info(), Eigen::Success);
   cholmod_factor* L = cholmod.factor();
@@ -69,7 +94,7 @@ TEST(SupernodalCholesky, ReproducesCholmodsFactorAndGivesTheSameBitsOnAnyTeam) {
   const double* x = static_cast<const double*>(L->x);
   const std::vector<double> reference(x, x + L->xsize);
   SupernodalCholesky numeric;
-  ASSERT_TRUE(numeric.analyse(*L));
+  ASSERT_TRUE(numeric.analyze(*L));
   EXPECT_TRUE(numeric.fits(*L));
   EXPECT_FALSE(numeric.cut().part[0].empty());
   EXPECT_FALSE(numeric.cut().part[1].empty());
@@ -84,19 +109,7 @@ TEST(SupernodalCholesky, ReproducesCholmodsFactorAndGivesTheSameBitsOnAnyTeam) {
   EXPECT_EQ(ours[0], ours[1]);  // the same bits on one thread and on two
   // CHOLMOD's values to round-off, in the lower triangles (the upper part of a diagonal block is
   // not part of the factor).
-  double largest = 0.0, diff = 0.0;
-  for (size_t s = 0; s < L->nsuper; ++s) {
-    const int* super = static_cast<const int*>(L->super);
-    const int* pi = static_cast<const int*>(L->pi);
-    const int* px = static_cast<const int*>(L->px);
-    const int nscol = super[s + 1] - super[s], nsrow = pi[s + 1] - pi[s];
-    for (int c = 0; c < nscol; ++c)
-      for (int r = c; r < nsrow; ++r) {
-        const size_t k = static_cast<size_t>(px[s]) + static_cast<size_t>(c) * nsrow + r;
-        largest = std::max(largest, std::abs(reference[k]));
-        diff = std::max(diff, std::abs(ours[0][k] - reference[k]));
-      }
-  }
+  const auto [diff, largest] = factor_difference(*L, reference.data(), ours[0].data());
   EXPECT_LT(diff, 1e-12 * largest);
   // CHOLMOD's solve with our factor.
   cholmod.factorize(A);  // CHOLMOD's values again ...
@@ -106,6 +119,80 @@ TEST(SupernodalCholesky, ReproducesCholmodsFactorAndGivesTheSameBitsOnAnyTeam) {
   const Eigen::VectorXd x_ours = cholmod.solve(b);
   EXPECT_LT((x_ours - x_cholmod).norm(), 1e-10 * x_cholmod.norm());
   EXPECT_LT((A * x_ours - b).norm(), 1e-10 * b.norm());
+}
+
+TEST(SupernodalCholesky, LargeDenseBlocksGoThroughTheChunkedKernels) {
+  // A dense 300 x 300 block coupled to a plate: supernodes of more than 96 columns (the kernels'
+  // chunk), updates with more than 96 rows and columns, several chunks in every kernel.
+  SparseMatrix P = plate_matrix(24, 1e-3);  // 1 728 unknowns
+  const int n = static_cast<int>(P.rows()), m = 300;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < P.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(P, k); it; ++it)
+      t.emplace_back(it.row(), it.col(), it.value());
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double v = (i == j ? 2.0 * m : 0.0) + std::cos(0.1 * (i + 1) * (j + 1));
+      t.emplace_back(n - m + i, n - m + j, v);
+    }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  Wrapper cholmod;
+  cholmod.compute(A);
+  ASSERT_EQ(cholmod.info(), Eigen::Success);
+  cholmod_factor* L = cholmod.factor();
+  int widest = 0;
+  for (size_t s = 0; s < L->nsuper; ++s) {
+    const int* super = static_cast<const int*>(L->super);
+    widest = std::max(widest, super[s + 1] - super[s]);
+  }
+  EXPECT_GT(widest, 2 * 96);
+  const double* x = static_cast<const double*>(L->x);
+  const std::vector<double> reference(x, x + L->xsize);
+  SupernodalCholesky numeric;
+  ASSERT_TRUE(numeric.analyze(*L));
+  ASSERT_TRUE(numeric.factorize(A, L));
+  const auto [diff, largest] = factor_difference(*L, reference.data(), x);
+  EXPECT_LT(diff, 1e-12 * largest);
+}
+
+TEST(SupernodalCholesky, RefusesAPatternOutsideTheFactorAndNonFiniteValues) {
+  const SparseMatrix A = plate_matrix(30, 1e-3);
+  Wrapper cholmod;
+  cholmod.compute(A);
+  cholmod_factor* L = cholmod.factor();
+  SupernodalCholesky numeric;
+  ASSERT_TRUE(numeric.analyze(*L));
+  ASSERT_TRUE(numeric.factorize(A, L));
+  // An entry coupling two far-apart unknowns: not in L's structure.
+  SparseMatrix B = A;
+  const int n = static_cast<int>(A.rows());
+  B.coeffRef(0, n - 1) = 1e-3;
+  B.coeffRef(n - 1, 0) = 1e-3;
+  B.makeCompressed();
+  EXPECT_FALSE(numeric.factorize(B, L));
+  // A NaN on the diagonal (Eigen's LLT alone would take it).
+  SparseMatrix C = A;
+  C.coeffRef(n / 2, n / 2) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(numeric.factorize(C, L));
+  ASSERT_TRUE(numeric.factorize(A, L));  // and back
+}
+
+TEST(SupernodalCholesky, ANewAnalysisIsFollowed) {
+  // The product's solver: two patterns one after the other, each factorised twice (CHOLMOD's,
+  // then the two-thread one), the solves right each time.
+  SparseSpdSolver solver(SparseSolverKind::kCholmodSupernodal);
+  for (int m : {30, 24, 30}) {
+    const SparseMatrix A = plate_matrix(m, 1e-3);
+    const Eigen::VectorXd b = load(static_cast<int>(A.rows()));
+    solver.analyze(A);
+    for (int k = 0; k < 2; ++k) {
+      ASSERT_TRUE(solver.factorize(A));
+      EXPECT_LT((A * solver.solve(b) - b).norm(), 1e-10 * b.norm()) << m << " " << k;
+    }
+  }
+  EXPECT_EQ(solver.fallbacks(), 0);
 }
 
 TEST(SupernodalCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
@@ -133,8 +220,8 @@ TEST(SupernodalCholesky, RefusesAFactorThatIsNotSupernodal) {
   L.is_super = 0;
   L.is_ll = 1;
   SupernodalCholesky numeric;
-  EXPECT_FALSE(numeric.analyse(L));
-  EXPECT_FALSE(numeric.analysed());
+  EXPECT_FALSE(numeric.analyze(L));
+  EXPECT_FALSE(numeric.analyzed());
 }
 
 }  // namespace
