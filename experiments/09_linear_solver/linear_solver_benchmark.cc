@@ -89,37 +89,29 @@ Row time_cholmod(const std::string& name, int ordering, bool supernodal, const v
   return r;
 }
 
-// The product's factorisation: SparseSpdSolver, CHOLMOD's analysis and first factorisation, then
-// the numeric factorisations of linalg/supernodal_cholesky.h (two threads; `threads` sets the
-// OpenMP team: 1 runs the two parts one after the other).
+// The product's factorisation in the interface time_solver uses: SparseSpdSolver, whose analysis
+// is CHOLMOD's and whose first factorisation (which allocates the factor) is CHOLMOD's too; the
+// timed ones are those of linalg/supernodal_cholesky.h.
+struct ProductSolver {
+  vs::SparseSpdSolver solver{vs::SparseSolverKind::kCholmodSupernodal};
+  void analyzePattern(const vs::SparseMatrix& A) {
+    solver.analyze(A);
+    solver.factorize(A);
+  }
+  void factorize(const vs::SparseMatrix& A) { solver.factorize(A); }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return solver.solve(b); }
+};
+
+// `threads` sets the OpenMP team (1: the two parts one after the other).
 Row time_product(const std::string& name, const vs::SparseMatrix& A, const Eigen::VectorXd& b,
                  int repeats, int threads) {
   const int was = omp_get_max_threads();
   omp_set_num_threads(threads);
-  Row r;
-  r.name = name;
-  vs::SparseSpdSolver solver(vs::SparseSolverKind::kCholmodSupernodal);
-  auto t0 = Clock::now();
-  solver.analyze(A);
-  r.analyse_s = since(t0);
-  solver.factorize(A);  // CHOLMOD's, which allocates the factor
-  std::vector<double> f, s;
-  Eigen::VectorXd x;
-  for (int k = 0; k < repeats; ++k) {
-    t0 = Clock::now();
-    solver.factorize(A);
-    f.push_back(since(t0));
-    t0 = Clock::now();
-    x = solver.solve(b);
-    s.push_back(since(t0));
-  }
+  ProductSolver product;
+  Row r = time_solver(name, product, A, b, repeats);
   omp_set_num_threads(was);
-  r.factor_s = median(f);
-  r.solve_s = median(s);
-  r.residual = (A.selfadjointView<Eigen::Lower>() * x - b).norm() / b.norm();
-  const cholmod_factor* L = solver.held_cholmod_factor();
-  r.factor_nnz =
-      L ? static_cast<double>(L->xsize) : 0.0;  // stored entries (CHOLMOD rows: nonzeros)
+  const cholmod_factor* L = product.solver.held_cholmod_factor();
+  r.factor_nnz = L ? static_cast<double>(L->xsize) : 0.0;  // stored entries (CHOLMOD: nonzeros)
   return r;
 }
 
