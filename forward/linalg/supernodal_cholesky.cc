@@ -1,5 +1,7 @@
 #include "linalg/supernodal_cholesky.h"
 
+#include <omp.h>
+
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <atomic>
@@ -80,10 +82,18 @@ bool cholesky_in_place(Ref A) {
 // Eigen's own OpenMP split of a product, which it makes outside a parallel region, is off while
 // this lives: that split packs into shared heap buffers (the fault above), and the top set's
 // products run on the calling thread like the parts' (the same arithmetic for any team). 0
-// restores Eigen's default (the OpenMP team size); nothing else in the project sets it.
+// restores Eigen's default (the OpenMP team size); nothing else in the project sets it. The
+// setting is one global: it is touched only by a thread whose team could split (more than one
+// thread), never by the calibration's side-by-side forward runs, which run on one thread each
+// (inverse/forward_cache.cc) and so cannot split anyway.
 struct SerialEigenProducts {
-  SerialEigenProducts() { Eigen::setNbThreads(1); }
-  ~SerialEigenProducts() { Eigen::setNbThreads(0); }
+  const bool touch = omp_get_max_threads() > 1;
+  SerialEigenProducts() {
+    if (touch) Eigen::setNbThreads(1);
+  }
+  ~SerialEigenProducts() {
+    if (touch) Eigen::setNbThreads(0);
+  }
   SerialEigenProducts(const SerialEigenProducts&) = delete;
   SerialEigenProducts& operator=(const SerialEigenProducts&) = delete;
 };
