@@ -155,7 +155,7 @@ bool SupernodalCholesky::analyze(const cholmod_factor& L) {
   top_size_ = 0;
   for (int j : cut_.top) {
     top_offset_[j] = top_size_;
-    top_size_ += static_cast<size_t>(st_.rows(j)) * st_.columns(j);
+    top_size_ += st_.entries(j);
   }
   size_t largest_update = 1;
   for (const Update& u : updates_) {
@@ -175,7 +175,7 @@ bool SupernodalCholesky::analyze(const cholmod_factor& L) {
 bool SupernodalCholesky::assemble(const SparseMatrix& A, int j, double* block, Workspace* w) const {
   const int k1 = st_.super[j], nscol = st_.columns(j), nsrow = st_.rows(j);
   const int* rows = st_.row_indices(j);
-  std::fill(block, block + static_cast<size_t>(nsrow) * nscol, 0.0);
+  std::fill(block, block + st_.entries(j), 0.0);
   for (int t = 0; t < nsrow; ++t) w->local[rows[t]] = t;
   for (int c = 0; c < nscol; ++c) {
     const int k = k1 + c;
@@ -223,8 +223,7 @@ bool SupernodalCholesky::factor_block(int j, double* x) const {
 }
 
 void SupernodalCholesky::copy_block(int j, double* to) const {
-  const size_t size = static_cast<size_t>(st_.rows(j)) * st_.columns(j);
-  std::memcpy(to + st_.px[j], x_.data() + st_.px[j], size * sizeof(double));
+  std::memcpy(to + st_.px[j], x_.data() + st_.px[j], st_.entries(j) * sizeof(double));
 }
 
 bool SupernodalCholesky::factorize(const SparseMatrix& A, cholmod_factor* L) {
@@ -263,7 +262,7 @@ bool SupernodalCholesky::factorize(const SparseMatrix& A, cholmod_factor* L) {
   for (int j : cut_.top) {
     double* block = x + st_.px[j];
     if (!assemble(A, j, block, &w)) return false;
-    const size_t size = static_cast<size_t>(st_.rows(j)) * st_.columns(j);
+    const size_t size = st_.entries(j);
     for (int p = 0; p < TreeCut::kParts; ++p) {
       const double* b = buffer_[p].data() + top_offset_[j];
       for (size_t i = 0; i < size; ++i) block[i] += b[i];

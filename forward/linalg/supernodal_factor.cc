@@ -23,8 +23,7 @@ bool SupernodalFactor<Scalar>::assign(const cholmod_factor& L) {
 template <typename Scalar>
 void SupernodalFactor<Scalar>::cut_tree() {
   std::vector<double> entries(static_cast<size_t>(st_.num_supernodes()));
-  for (int j = 0; j < st_.num_supernodes(); ++j)
-    entries[j] = static_cast<double>(st_.rows(j)) * st_.columns(j);
+  for (int j = 0; j < st_.num_supernodes(); ++j) entries[j] = static_cast<double>(st_.entries(j));
   cut_ = vs::cut_tree(st_.parents(), entries);
   slot_.assign(static_cast<size_t>(n_), -1);
   top_columns_.clear();

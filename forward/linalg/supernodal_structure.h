@@ -8,6 +8,7 @@
 
 #include <cholmod.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace vs {
@@ -30,6 +31,8 @@ struct SupernodalStructure {
   int num_supernodes() const { return static_cast<int>(super.size()) - 1; }
   int columns(int j) const { return super[j + 1] - super[j]; }
   int rows(int j) const { return pi[j + 1] - pi[j]; }
+  // Entries of supernode j's block (rows x columns).
+  size_t entries(int j) const { return static_cast<size_t>(rows(j)) * columns(j); }
   const int* row_indices(int j) const { return s.data() + pi[j]; }
   // Parent of every supernode (the supernode holding its first row below the diagonal block;
   // -1 for a root). A parent always comes after its children.
