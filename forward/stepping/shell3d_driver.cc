@@ -84,6 +84,7 @@ class Shell3dStepper {
       : scene_(scene), options_(options), driver_(driver), model_(scene) {
     contact_tol_ = driver.contact_tolerance * scene.blank.thickness_mm;
     attach_tol_ = driver.attach_tolerance * scene.blank.thickness_mm;
+    punch_attach_tol_ = driver.punch_attach_tolerance * scene.blank.thickness_mm;
     nl_.kind = scene.numerics.solver;
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
@@ -190,6 +191,7 @@ class Shell3dStepper {
   double grid_increment_mm_ = 0.0;
   double contact_tol_ = 0.0;
   double attach_tol_ = 0.0;
+  double punch_attach_tol_ = 0.0;
   double assembly_s_ = 0.0, factorisation_s_ = 0.0;
   int factorisations_ = 0;
   int krylov_steps_ = 0, krylov_iterations_ = 0;
@@ -258,11 +260,15 @@ void Shell3dStepper::maintain_contacts(FormingState& s, const ContactHolds& hold
       if (holds.defers(model_.tools()[t].sticking())) continue;
       const double g = model_.project(t, s.x[i], s.thickness[i], model_.on_axis(i)).gap;
       // Holes inside a contact patch are filled within a small fraction of the thickness (as
-      // the axisymmetric driver does): a node most of whose neighbours touch this tool.
+      // the axisymmetric driver does): a node most of whose neighbours touch this tool; within a
+      // larger one on a punch (StepDriverOptions::punch_attach_tolerance).
       int touching = 0;
       const auto& nb = model_.neighbours(i);
       for (int j : nb) touching += s.contact[j].tool == t ? 1 : 0;
-      const double tol = 2 * touching > static_cast<int>(nb.size()) ? attach_tol_ : contact_tol_;
+      const bool next_to_patch = 2 * touching > static_cast<int>(nb.size());
+      const double tol = !next_to_patch                 ? contact_tol_
+                         : model_.tools()[t].is_punch() ? punch_attach_tol_
+                                                        : attach_tol_;
       if (g <= tol && g < best_gap) {
         best_gap = g;
         best = t;

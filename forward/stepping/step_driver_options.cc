@@ -13,7 +13,8 @@ bool StepDriverOptions::IsValid(std::string* why) const {
   };
   if (!(contact_tolerance > 0.0 && contact_tolerance <= attach_tolerance))
     return fail("contact_tolerance must be positive and at most attach_tolerance");
-  if (!(attach_tolerance < 1.0)) return fail("attach_tolerance must be below 1 thickness");
+  if (!(attach_tolerance <= punch_attach_tolerance && punch_attach_tolerance < 1.0))
+    return fail("punch_attach_tolerance must be at least attach_tolerance and below 1 thickness");
   if (max_contact_rounds < 1) return fail("max_contact_rounds must be at least 1");
   if (!(release_fraction >= 0.0 && release_fraction < 1.0))
     return fail("release_fraction must be in [0, 1)");
