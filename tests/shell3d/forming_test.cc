@@ -203,12 +203,13 @@ int holes_in_contact_patch(const RunResult& shell, double h0) {
   return holes;
 }
 
-// The contact patch under the punch has no holes (StepDriverOptions::punch_attach_tolerance). On 16
-// divisions a node of the 9-node sheet can stay a few hundredths of a millimetre above the punch
-// while its neighbours touch, and then rises; free inside the patch, it thinned differently from
-// its neighbours (single-node spikes of the thickness strain of 0.010 at 16 and 0.026 at 32
-// divisions at 30 mm, experiments/05_shell3d, "Holes in the contact patch"). Measured at 4 mm:
-// 2 such nodes on the three lines with attach_tolerance (1 % of the thickness), none now.
+// The contact patch under the punch has no holes (StepDriverOptions::punch_attach_tolerance).
+// On 16 divisions a node of the 9-node sheet can stay a few hundredths of a millimetre above the
+// punch while its neighbours touch, and then rises; free inside the patch, it thinned differently
+// from its neighbours (single-node spikes of the thickness strain against the twin, 0.011 at 16
+// and 0.027 at 32 divisions at 30 mm; experiments/05_shell3d, "Holes in the contact patch").
+// Measured at 4 mm: 2 such nodes on the three lines with attach_tolerance (1 % of the
+// thickness), none now.
 TEST(Forming3d, NoFreeNodeInsideThePunchContactPatch) {
   Scene s = example_4a();
   s.blank.divisions = 16;
