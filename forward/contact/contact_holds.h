@@ -20,6 +20,10 @@ struct ContactHolds {
   // last_solve, stepping/step_driver.h): set around the contact search of every configuration
   // but the last.
   bool defer_new = false;
+  // Releases wait for the last solve of an implicit step (set around every solve but the last,
+  // stepping/step_driver.h): those solves' velocities only place the next configuration, and the
+  // last configuration decides which nodes leave a tool.
+  bool keep_touching = false;
 
   void reset(int nodes) {
     released.assign(nodes, 0);
@@ -38,6 +42,11 @@ struct ContactHolds {
   // the edge of the stuck patch by up to a step (measured: ex1 sticking, 48 elements, at the
   // default step the neck at the patch edge thinned to 0.444 mm against 0.489 step-converged).
   bool defers(bool sticking_tool) const { return defer_new && !sticking_tool; }
+  // May a node whose reaction pulls leave a tool in this solve? Always on a sticking tool: a
+  // stuck node that pulls is the edge of the stuck patch, which slides from the next solve on
+  // (AxisymStepper::attach); held to the last solve, the edge of the stuck cap necked deeper
+  // (ex1 sticking, 24 against 48 elements).
+  bool may_release(bool sticking_tool) const { return !keep_touching || sticking_tool; }
   // May node search for contact at this travel?
   bool may_touch(int node, double travel_mm) const {
     if (!released.empty() && released[node]) return false;

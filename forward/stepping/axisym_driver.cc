@@ -330,7 +330,10 @@ bool AxisymStepper::solve(Solved* out, double dt_predicted,
       double smoothed = 0.5 * N[i];
       smoothed += 0.25 * (next ? N[i + 1] : N[i]);
       smoothed += 0.25 * (prev ? N[on_axis ? i + 1 : i - 1] : N[i]);
-      if (smoothed < -driver_.release_fraction * scale) release.push_back(i);
+      if (smoothed < -driver_.release_fraction * scale &&
+          holds.may_release(model_.tools()[tool].sticking())) {
+        release.push_back(i);
+      }
     }
     for (int i : release) {
       if (options_.verbose) {

@@ -360,7 +360,7 @@ bool Shell3dStepper::solve(Solved* out, double dt_predicted,
       // A node sandwiched in a fixed gap, or squeezed between two tools, touches both faces
       // whatever its reaction on one.
       if (other > 0 && smoothed[i] < -threshold && !s.contact[i].sandwiched &&
-          s.contact[i].squeeze_tool < 0) {
+          s.contact[i].squeeze_tool < 0 && holds.may_release(model_.tools()[tool].sticking())) {
         candidates.push_back(i);
       } else {
         ++kept_per_tool[tool];

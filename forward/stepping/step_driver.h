@@ -214,6 +214,16 @@ bool StepDriver<Stepper>::take_step(const Solved& from, double dt, Solved* to, s
 // that blend, 4-45x farther from their answer). Every solve but the last stops at a looser
 // tolerance (StepDriverOptions::implicit_first_tolerance_factor): its velocity only places the
 // next configuration.
+// Releases wait for the last solve: a node whose reaction pulls leaves a (not sticking) tool only
+// in the last solve's contact rounds. The configuration moved with the start velocity puts nodes
+// at the front of a patch onto a tool whose reaction then pulls, and the later solves' contact
+// sets start from the step start's (plus what the previous solve found touching), so each later
+// solve repeated the first solve's release rounds (ex4a, 32 divisions, friction 0.2: 4-10 nodes in
+// 1-3 extra rounds in most steps, each round a factorisation). Measured (experiments/05_shell3d,
+// "Releases in the last solve"): ex4a 32 divisions to 5 mm, 139 -> 121 solves, 130.5 -> 109.2 s;
+// the Hill 1948 TUAT cup 43.0 -> 30.8 s. Carrying the first solve's releases into the later
+// solves instead saved as much but decided them in the predictor's configuration: the quarter 3D
+// cup chattered (39 cut-backs).
 // Where new contacts enter (numerics.contact_entry). first_solve (the default): a node that
 // reaches a tool in the first solve's configuration (moved with the start velocity) touches from
 // the first solve on. last_solve: every configuration but the last is searched for the contact
@@ -248,6 +258,7 @@ bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solv
       g.couple_geometry(nullptr, 0.0);
       g.set_tolerance(tolerance);
       holds.defer_new = false;
+      holds.keep_touching = false;
     }
   } restore{g_, scene_.numerics.tolerance, holds_};
   const double theta = scene_.numerics.implicit_theta;
@@ -263,6 +274,7 @@ bool StepDriver<Stepper>::take_implicit_step(const Solved& from, double dt, Solv
     const bool last = k + 1 == solves;
     const Solved moving = g_.blend(from, previous, theta);
     holds_.defer_new = defer && !last;  // numerics.contact_entry (above; restore clears it)
+    holds_.keep_touching = !last;       // releases wait for the last solve (above)
     if (!advance(moving, dt, &to->state, why)) return false;  // (thickness included)
     if (k > 0) {
       // Nodes the previous solve found touching touch here too; attaching moves them, so the
