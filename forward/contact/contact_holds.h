@@ -44,8 +44,9 @@ struct ContactHolds {
   bool defers(bool sticking_tool) const { return defer_new && !sticking_tool; }
   // May a node whose reaction pulls leave a tool in this solve? Always on a sticking tool: a
   // stuck node that pulls is the edge of the stuck patch, which slides from the next solve on
-  // (AxisymStepper::attach); held to the last solve, the edge of the stuck cap necked deeper
-  // (ex1 sticking, 24 against 48 elements).
+  // (AxisymStepper::attach); held to the last solve, the edge of the stuck cap necked deeper and
+  // mesh-dependently (ex1 sticking, 24 against 48 elements: thinnest point 31 % apart, mean force
+  // over 25-30 mm 6 %; AxisymForming.StickingIsNeitherPathNorMeshSensitive allows 3 %).
   bool may_release(bool sticking_tool) const { return !keep_touching || sticking_tool; }
   // May node search for contact at this travel?
   bool may_touch(int node, double travel_mm) const {
