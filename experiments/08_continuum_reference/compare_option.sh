@@ -5,6 +5,7 @@
 # (compare_friction_surface.sh, section 11). Needs the vshell binary: BUILD_DIR (default
 # ../../build)/app/vshell. About 10 s.
 # Usage: compare_option.sh KEY CSV VALUE...   (e.g. numerics.normal_stress normal_stress.csv none contact)
+# EXTRA_SET="KEY=VALUE ..." adds scene edits to every run (e.g. numerics.normal_stress=contact).
 set -euo pipefail
 [ $# -ge 3 ] || { sed -n 2,7p "$0"; exit 2; }
 key=$1 csv=$2
@@ -21,7 +22,7 @@ outs='process.output_travels_mm=[5,10,15,20,25,28.2062,29.2062,30]'
 shell() {  # name scene overrides...
   local name=$1 scene=$2; shift 2
   local args=()
-  for s in "$@"; do args+=(--set "$s"); done
+  for s in "$@" ${EXTRA_SET:-}; do args+=(--set "$s"); done
   "$vshell" run "$scene" "${args[@]}" -o "$scratch/$name" > "$scratch/$name.log" 2>&1
 }
 C=$res/$csv

@@ -445,7 +445,10 @@ void AxisymModel::evaluate_elements(const AxisymState& s, const Eigen::VectorXd&
     assert(!dual || flow_directions->size() == out->directions.size());
   }
   for (int e = 0; e < num_elements(); ++e) {
-    Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e], shear_viscosity_[e]};
+    // numerics.transverse_shear_scale: on the shear penalty only (not on the fixed-gap holder's
+    // penalty, which borrows the same viscosity as its scale).
+    Axisym2Section sec{s.thickness[e], &sigma_y_[e], &hardening_viscosity_[e],
+                       scene_.numerics.transverse_shear_scale * shear_viscosity_[e]};
     if (dual) sec.flow_direction = flow_directions->data() + 2 * np * e;
     if (!face_pressure_.empty()) sec.face_pressure = face_pressure_[e];
     const Vec6 d = v.segment<6>(3 * e);

@@ -545,6 +545,9 @@ Shell9Geometry FormingModel::geometry(const FormingState& s, int e) const {
 Shell9Material FormingModel::material(int e) const {
   Shell9Material mat = Shell9Material::Viscous(hill_, shear_viscosity_[e]);
   mat.planar = planar_.get();
+  // numerics.transverse_shear_scale: on the shear penalty only (not on the drilling stiffness
+  // or the fixed-gap holder's penalty, which borrow the same viscosity as their scale).
+  mat.shear_correction *= scene_.numerics.transverse_shear_scale;
   return mat;
 }
 

@@ -249,6 +249,10 @@ struct NumericsSpec {
   double strain_rate_cutoff = 1e-4;       // cut-off rate, relative to punch_speed / blank radius
   double friction_regularisation = 1e-4;  // Coulomb arctan velocity, relative to punch speed
   int max_cutbacks = 8;                   // step halvings before the run stops
+  // Factor on the transverse-shear penalty viscosity (the section's mid point at the nominal rate;
+  // AxisymModel / FormingModel::freeze_material). A numerical choice, not a material constant:
+  // experiments/08_continuum_reference, section 14.
+  double transverse_shear_scale = 1.0;
   ShellElementRule element_rule = ShellElementRule::kMitc9;  // geometry = shell3d only
   NormalStress normal_stress = NormalStress::kNone;
   FrictionSurface friction_surface = FrictionSurface::kMid;

@@ -53,6 +53,8 @@ TEST(SceneErrors, OutOfRangeValuesNameKeyRangeAndUnit) {
             "scene.toml:2:12: blank.elements = 1000000000 is out of range [4, 2000]: run time and "
             "per-step history grow with the square of the element count (2000 elements: minutes "
             "and GBs)");
+  EXPECT_EQ(scene_error("[numerics]\ntransverse_shear_scale = 0\n"),
+            "scene.toml:2:26: numerics.transverse_shear_scale = 0 is out of range [0.01, 100]");
   EXPECT_EQ(
       scene_error("[numerics]\nstep_fraction = 1e-4\n"),
       "scene.toml:2:17: numerics.step_fraction = 0.0001 is out of range [0.05, 1]: a fraction "
