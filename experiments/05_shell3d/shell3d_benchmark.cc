@@ -11,6 +11,7 @@
 //                     [--double-preconditioner] [--first-tolerance-factor X]
 //                     [--start-refinement L] [--implicit-solves N] [--fine-reference X]
 //                     [--contact-entry first_solve|last_solve] [--cholmod-factorisation]
+//                     [--transverse-shear-scale X]
 // --speed-setting: numerics.max_travel_increment_per_length = 0.05 and strain_rate_cutoff = 1e-2
 // (the axisymmetric speed setting of experiments/01_performance); --per-length / --cutoff set the
 // two keys one by one (after --speed-setting, whatever the order). --implicit: the 3D runs with
@@ -26,6 +27,8 @@
 // --implicit-solves N: numerics.implicit_solves (velocity solves per implicit step, 2 by default);
 // --contact-entry first_solve|last_solve: numerics.contact_entry (the solve of an implicit step in
 // which new contacts enter);
+// --transverse-shear-scale X: numerics.transverse_shear_scale in the 3D runs and the twin (the
+// same model on both sides; experiments/08_continuum_reference section 14);
 // --fine-reference X: each run is also compared with a run of the same 3D mesh at X element lengths
 // per step with contact events and no graded start (its time-stepping error alone, without the
 // mesh's; for X small enough the reference's own error is negligible). --goal: after each run, the
@@ -134,6 +137,7 @@ struct Args {
   bool quick = false;
   bool speed_setting = false;
   double per_length = 0.0, cutoff = 0.0;  // 0: the scene's (or the speed setting's)
+  double shear_scale = 0.0;               // 0: the scene's
   bool implicit = false;                  // --implicit: numerics.time_integration = implicit
   bool no_events = false;                 // --no-events: numerics.contact_events = false
   bool goal = false;
@@ -195,6 +199,8 @@ Args parse(int argc, char** argv) {
       a.per_length = std::stod(value);
     } else if (key == "--cutoff") {
       a.cutoff = std::stod(value);
+    } else if (key == "--transverse-shear-scale") {
+      a.shear_scale = std::stod(value);
     } else if (key == "--axisym-elements") {
       a.axisym_elements = std::stoi(value);
     } else if (key == "--csv") {
@@ -367,6 +373,7 @@ int main(int argc, char** argv) {
   }
   if (args.per_length > 0.0) base.numerics.max_travel_increment_per_length = args.per_length;
   if (args.cutoff > 0.0) base.numerics.strain_rate_cutoff = args.cutoff;
+  if (args.shear_scale > 0.0) base.numerics.transverse_shear_scale = args.shear_scale;
   if (args.implicit) base.numerics.time_integration = vs::TimeIntegration::kImplicit;
   if (args.no_events) base.numerics.contact_events = false;
   if (args.start_refinement >= 0) base.numerics.start_refinement = args.start_refinement;
