@@ -309,7 +309,9 @@ std::vector<KeySpec> build() {
       "model_form", "set", KeyType::kTable, "", Range{}, [] { return std::string("none"); },
       "Scene edits of the alternative, as in [forward.set] and added to it: "
       "{ \"blank.elements\" = 48 }, { \"numerics.thickness_points\" = 9 }, "
-      "{ \"numerics.strain_rate_cutoff\" = 1e-4 }. Checked before any forward "
+      "{ \"numerics.strain_rate_cutoff\" = 1e-4 }, { \"numerics.transverse_shear_scale\" = 0.3 } "
+      "(the shell's shear penalty, a choice with no material value that moves thickness "
+      "profiles by the size of a shell's model-form error). Checked before any forward "
       "run. An alternative has set, drop_data or both."));
   k.push_back(key(
       "model_form", "drop_data", KeyType::kStringArray, "", Range{},
