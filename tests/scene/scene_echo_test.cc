@@ -45,7 +45,8 @@ void expect_round_trip(const std::string& path) {
 TEST(SceneEcho, EveryBundledSceneLoadsBackToTheSameScene) {
   const std::filesystem::path root = VS_SOURCE_DIR;
   int scenes = 0;
-  for (const char* folder : {"data/scenes", "experiments/10_earing/scenes"}) {
+  for (const char* folder :
+       {"data/scenes", "experiments/10_earing/scenes", "experiments/05_shell3d"}) {
     for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
       if (entry.path().extension() != ".toml") continue;
       SCOPED_TRACE(entry.path().string());
