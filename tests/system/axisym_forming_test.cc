@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "../../experiments/common/axisym_comparison.h"
@@ -310,6 +311,44 @@ TEST(AxisymForming, StretchingIsNotSqueezed) {
   const RunResult r = Stretch("0.04", "24");
   ASSERT_TRUE(r.completed()) << r.message;
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
+// The axisymmetric twin of the 3D quarter disc (ex4a, friction 0.2) is the 3D solver's accuracy
+// reference. At the default shear penalty its 30- and 120-element runs differ by up to 0.0096 in
+// thickness strain at 30 mm: the 2-node element's contact reactions alternate node to node near
+// the edge of the punch contact, more as the elements shorten (experiments/05_shell3d, "The twin's
+// mesh dependence"; experiments/08_continuum_reference section 14). With the penalty at 0.1 the
+// two agree within 0.0006 (measured); the bound is 0.0015. The default's figure is printed.
+TEST(AxisymForming, TwinIsMeshIndependentWithTheSoftShearPenalty) {
+  Scene quarter = load_scene(test::scene_path("ex4a_quarter_disc_sticking.toml"));
+  for (auto& t : quarter.tools) t.friction = 0.2;
+  auto largest_difference = [&](double scale) {
+    Scene coarse = shell3d::axisymmetric_twin(quarter, 30),
+          fine = shell3d::axisymmetric_twin(quarter, 120);
+    coarse.numerics.transverse_shear_scale = fine.numerics.transverse_shear_scale = scale;
+    coarse.output.history = fine.output.history = false;
+    const RunResult a = simulate(coarse), b = simulate(fine);
+    EXPECT_TRUE(a.completed() && b.completed()) << a.message << b.message;
+    const Profile& pa = a.profiles.at(2);
+    const Profile& pb = b.profiles.at(2);
+    EXPECT_NEAR(pa.punch_travel_mm, 30.0, 1e-9);
+    double worst = 0.0;
+    for (std::size_t e = 0; e < pa.r0_mm.size(); ++e) {
+      const double x = pa.r0_mm[e];
+      if (x < pb.r0_mm.front() || x > pb.r0_mm.back()) continue;
+      const auto hi = std::upper_bound(pb.r0_mm.begin(), pb.r0_mm.end(), x);
+      const std::size_t k =
+          std::max<std::size_t>(1, static_cast<std::size_t>(hi - pb.r0_mm.begin()));
+      const double w = (x - pb.r0_mm[k - 1]) / (pb.r0_mm[k] - pb.r0_mm[k - 1]);
+      const double ref = (1.0 - w) * pb.eps_thickness[k - 1] + w * pb.eps_thickness[k];
+      worst = std::max(worst, std::abs(pa.eps_thickness[e] - ref));
+    }
+    return worst;
+  };
+  const double soft = largest_difference(0.1);
+  EXPECT_LT(soft, 0.0015);
+  std::printf("30 against 120 elements at 30 mm: %.4f (factor 0.1), %.4f (default)\n", soft,
+              largest_difference(1.0));
 }
 
 }  // namespace
