@@ -42,7 +42,7 @@ def main():
             section = ("node" if head.startswith("*NODE,") else
                        "tool" if head.startswith("*ELEMENT,") and "ELSET=TOOLS" in head else None)
             continue
-        p = [q for q in line.replace(",", " ").split()]
+        p = line.replace(",", " ").split()
         if section == "node" and len(p) >= 3:
             nodes[int(p[0])] = (float(p[1]), float(p[2]))
         elif section == "tool" and len(p) == 9:
@@ -85,12 +85,14 @@ def main():
                 faces.append(f)
                 for n in (f[0], f[2]):
                     shared[n] = shared.get(n, 0) + 1
+    def phi(n):  # angle from the punch axis
+        return math.atan2(nodes[n][0], nodes[n][1] - zc)
+
     rows = []
     for a0, m, a1 in faces:
-        xa, xm, xc = nodes[a0][0], nodes[m][0], nodes[a1][0]
+        xm = nodes[m][0]
         if xm <= 0.0:
             continue
-        phi = lambda n: math.atan2(nodes[n][0], nodes[n][1] - zc)
         ds = abs(phi(a1) - phi(a0)) * R
         f = normal_force(a0) / shared[a0] + normal_force(m) + normal_force(a1) / shared[a1]
         rows.append((math.degrees(phi(m)), xm, f / (2.0 * math.pi * xm * ds)))
