@@ -605,7 +605,7 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
 
 void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
                      const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
-                     Shell9Output* out, double tangent_weight) {
+                     Shell9Output* out, double tangent_weight, const Shell9Operators* next) {
   Workspace& ws = workspace();
   const int n = ops.ndof;
   assert(q.size() == n);
@@ -619,7 +619,18 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   ws.rate.noalias() = ops.L * q;
   ws.gen.resize(R);
   if (want_k) ws.DL.resize(R, n);
+  // The next element's L, one slice of cache lines per flow point (shell9.h).
+  const char* ahead = next != nullptr ? reinterpret_cast<const char*>(next->L.data()) : nullptr;
+  const std::size_t ahead_bytes =
+      next != nullptr ? static_cast<std::size_t>(next->L.size()) * sizeof(double) : 0;
+  const std::size_t lines = (ahead_bytes + 63) / 64;
+  const std::size_t per_point =
+      ops.flow.empty() ? 0 : (lines + ops.flow.size() - 1) / ops.flow.size();
+  std::size_t line = 0;
   for (std::size_t f = 0; f < ops.flow.size(); ++f) {
+    for (std::size_t k = 0; k < per_point && line < lines; ++k, ++line) {
+      __builtin_prefetch(ahead + 64 * line, 0, 2);
+    }
     const Shell9Operators::FlowRow& fr = ops.flow[f];
     const Vec3 d = ws.rate.segment<3>(fr.row);
     PointLaw p = evaluate_point(mat, state, fr, static_cast<int>(f), d, kind, tangent_weight);

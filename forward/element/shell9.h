@@ -175,9 +175,17 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
                       Shell9Operators* ops);
 
 // Evaluates the element at element velocities q (size ops.ndof).
+//
+// `next`, if given, is the operators of the element the caller evaluates next: the loop over the
+// flow points asks the memory system for its L a slice at a time, so that its first L q finds it
+// in cache. A residual evaluation of a large mesh streams every element's L from memory (about
+// 48 KB for MITC9 with 3 thickness points, 37 MB at 768 elements); without the hint the first
+// L q of an element waits on it, 3.7 us against 0.9 us with it (16-division quarter disc, one
+// thread). It changes no result.
 void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
                      const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
-                     Shell9Output* out, double tangent_weight = 1.0);
+                     Shell9Output* out, double tangent_weight = 1.0,
+                     const Shell9Operators* next = nullptr);
 
 // The same, building the operators of g first.
 void shell9_evaluate(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
