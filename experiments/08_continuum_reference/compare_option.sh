@@ -5,7 +5,8 @@
 # (compare_friction_surface.sh, section 11). Needs the vshell binary: BUILD_DIR (default
 # ../../build)/app/vshell. About 10 s.
 # Usage: compare_option.sh KEY CSV VALUE...   (e.g. numerics.normal_stress normal_stress.csv none contact)
-# EXTRA_SET="KEY=VALUE ..." adds scene edits to every run (e.g. numerics.normal_stress=contact).
+# EXTRA_SET="KEY=VALUE ..." adds scene edits to every run (e.g. numerics.normal_stress=contact);
+# EX3_SET="KEY=VALUE ..." to the ex3 cup's runs only, after EXTRA_SET (e.g. its own moduli).
 set -euo pipefail
 [ $# -ge 3 ] || { sed -n 2,7p "$0"; exit 2; }
 key=$1 csv=$2
@@ -22,7 +23,7 @@ outs='process.output_travels_mm=[5,10,15,20,25,28.2062,29.2062,30]'
 shell() {  # name scene overrides...
   local name=$1 scene=$2; shift 2
   local args=()
-  for s in "$@" ${EXTRA_SET:-}; do args+=(--set "$s"); done
+  for s in ${EXTRA_SET:-} "$@"; do args+=(--set "$s"); done
   "$vshell" run "$scene" "${args[@]}" -o "$scratch/$name" > "$scratch/$name.log" 2>&1
 }
 C=$res/$csv
@@ -39,7 +40,9 @@ for ns in "$@"; do
   shell ex1_mu010_$ns "$ex1" tool.punch.friction=0.1 "$outs" "$o"
   shell ex1_mu030_$ns "$ex1" tool.punch.friction=0.3 "$outs" "$o"
   shell ex1_mu010_t0425_$ns "$ex1" tool.punch.friction=0.1 blank.thickness_mm=0.425 "$outs" "$o"
-  shell ex3_r1_$ns "$ex3" material.r_value=1 'process.output_travels_mm=[2,5,10,13.4391]' "$o"
+  # shellcheck disable=SC2086
+  shell ex3_r1_$ns "$ex3" material.r_value=1 'process.output_travels_mm=[2,5,10,13.4391]' "$o" \
+    ${EX3_SET:-}
   cmp ex1_mu000_$ns "$res/ex1_mu000_r60_l4" "$scratch/ex1_mu000_$ns" \
     --travels 5,10,15,20,25,28.2062 --strain-travels 10,20,25,28.2062
   cmp ex1_mu010_$ns "$res/ex1_mu010_r60_l4" "$scratch/ex1_mu010_$ns" \

@@ -2,13 +2,26 @@
 # The transverse-shear penalty's scale (numerics.transverse_shear_scale, README section 14) against
 # the continuum references, plane stress and with the normal-stress term:
 # results/transverse_shear.csv (labels <case>_<scale>) and results/transverse_shear_contact.csv.
-# About 40 s.
+# About 30 s.
 set -euo pipefail
 here=$(dirname "$0")
 "$here/compare_option.sh" numerics.transverse_shear_scale transverse_shear.csv 0.1 0.3 1 3 10
 EXTRA_SET=numerics.normal_stress=contact SCRATCH="$here/runs/shell_contact" \
   "$here/compare_option.sh" numerics.transverse_shear_scale transverse_shear_contact.csv \
   0.1 0.3 1 3 10
+# With the elastic start as well (README section 14, "The closest combination"): the term and
+# the continuum's moduli for the start (ex1 E 210 GPa, nu 0.3; the ex3 cup 70 GPa, 0.33 and the
+# continuum's 1.04 mm holder gap, as compare_elastic.sh), strains plastic only:
+# results/transverse_shear_elastic.csv (labels <case>_<scale>), and at 30 / 50 / 80 elements
+# with the factor 0.3: results/transverse_shear_elastic_mesh.csv (labels <case>_<elements>).
+elastic="material.elastic.law=isotropic material.elastic.E_MPa=210000 material.elastic.nu=0.3 material.elastic.strains=false"
+cup="material.elastic.E_MPa=70000 material.elastic.nu=0.33 tool.holder.gap_mm=1.04"
+EXTRA_SET="numerics.normal_stress=contact $elastic" EX3_SET=$cup \
+  SCRATCH="$here/runs/shell_elastic_shear" \
+  "$here/compare_option.sh" numerics.transverse_shear_scale transverse_shear_elastic.csv 0.3 0.5 1
+EXTRA_SET="numerics.normal_stress=contact $elastic numerics.transverse_shear_scale=0.3" \
+  EX3_SET=$cup SCRATCH="$here/runs/shell_elastic_mesh" \
+  "$here/compare_option.sh" blank.elements transverse_shear_elastic_mesh.csv 30 50 80
 # Mesh study (README section 14): ex1 with the normal-stress term at 30, 50 and 100 elements,
 # friction 0.1 and 0.3: results/transverse_shear_mesh.csv (labels ex1_mu<f>_e<elements>_<scale>).
 res=$here/results
