@@ -111,5 +111,30 @@ TEST(Shell9Element, ViscousTangentAndForceAreDerivatives) {
   }
 }
 
+TEST(Shell9Element, PrefetchingTheNextOperatorsChangesNothing) {
+  // shell9_evaluate's `next` only asks the memory system for the next element's L: forces,
+  // matrix, potential and point rates are the same bits with and without it, for either kind.
+  const Shell9Geometry g = curved_geometry();
+  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
+  const ViscousLaw law(RateSpec{}, 1e-3, 1.6);
+  const HillPlaneStressLaw hill(law);
+  const Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
+  Shell9Operators ops, next;
+  shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
+  shell9_operators(g, Shell9Rule::kMitc9, thick, &next);
+  std::vector<double> sy(ops.flow.size(), 200.0), hv(sy.size(), 3.0);
+  const Shell9State st{sy.data(), hv.data()};
+  const Eigen::VectorXd q = 1e-2 * test_velocity(g.ndof());
+  for (auto kind : {Shell9Stiffness::kNone, Shell9Stiffness::kTangent}) {
+    Shell9Output plain, ahead;
+    shell9_evaluate(ops, mat, st, q, kind, &plain);
+    shell9_evaluate(ops, mat, st, q, kind, &ahead, 1.0, &next);
+    EXPECT_TRUE(plain.force == ahead.force);
+    EXPECT_TRUE(plain.stiffness == ahead.stiffness);
+    EXPECT_EQ(plain.potential, ahead.potential);
+    EXPECT_EQ(plain.point_rate, ahead.point_rate);
+  }
+}
+
 }  // namespace
 }  // namespace vs::shell3d
