@@ -617,11 +617,8 @@ void FormingModel::element_kernel(const FormingState& /*s*/, int e, const Eigen:
     if (dual_mode_ == DualMode::kGiven) st.dual_given = dual_given_.data() + fp;
   }
   thread_local Shell9Output out;
-  // The assembler's threads take elements in runs of consecutive numbers: the next one's operators
-  // are usually this thread's next (shell9_evaluate's `next`).
-  const std::size_t ue = static_cast<std::size_t>(e);
-  const Shell9Operators* next = ue + 1 < operators_.size() ? &operators_[ue + 1] : nullptr;
-  shell9_evaluate(operators_[ue], mat, st, qe, kind, &out, theta, next);
+  shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, qe, kind, &out, theta,
+                  next_operators(e));
   c->force.swap(out.force);
   if (kind != Shell9Stiffness::kNone) c->stiffness.swap(out.stiffness);
   c->potential = out.potential;
@@ -869,9 +866,8 @@ void FormingModel::point_rates(const FormingState& /*s*/, const Eigen::VectorXd&
     const Shell9Material mat = material(e);
     const Shell9State st = element_state(e);
     Shell9Output out;
-    const std::size_t ue = static_cast<std::size_t>(e);
-    const Shell9Operators* next = ue + 1 < operators_.size() ? &operators_[ue + 1] : nullptr;
-    shell9_evaluate(operators_[ue], mat, st, q, Shell9Stiffness::kNone, &out, 1.0, next);
+    shell9_evaluate(operators_[static_cast<std::size_t>(e)], mat, st, q, Shell9Stiffness::kNone,
+                    &out, 1.0, next_operators(e));
     (*rates)[e] = std::move(out.point_rate);
     if (membrane) {
       std::vector<Mat3>& m = (*membrane)[static_cast<std::size_t>(e)];

@@ -358,6 +358,13 @@ class FormingModel {
   // Element e's frozen point data (yield stresses, hardening viscosities, face pressures, flow
   // guesses) for shell9_evaluate.
   Shell9State element_state(int e) const;
+  // The operators of element e + 1 (null for the last): shell9_evaluate's `next`. The
+  // assembler's threads take elements in runs of consecutive numbers, so it is usually the
+  // thread's next.
+  const Shell9Operators* next_operators(int e) const {
+    const std::size_t n = static_cast<std::size_t>(e) + 1;
+    return n < operators_.size() ? &operators_[n] : nullptr;
+  }
   // The friction terms of the last evaluate() (refresh_friction), per node in contact.
   struct FrictionTerm {
     int dof = 0;  // first tangential dof
