@@ -1,5 +1,6 @@
 // Sparse SPD solve: CHOLMOD supernodal LL^T through Eigen (symbolic analysis once per pattern,
-// numeric factorisation per call), with Eigen's SimplicialLDLT as fallback when CHOLMOD reports a
+// with CHOLMOD's nested dissection ordering (NESDIS; sparse_spd_solver.cc), numeric
+// factorisation per call), with Eigen's SimplicialLDLT as fallback when CHOLMOD reports a
 // failure (e.g. not positive definite) or when selected. numerics.md 4.1: CHOLMOD factorises a
 // 1e5-dof shell matrix ~2x faster than SimplicialLDLT on this machine, with a 7-15x faster
 // analysis. CHOLMOD reads the upper triangle of the (full) symmetric matrix, which spares it a

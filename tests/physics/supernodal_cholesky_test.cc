@@ -195,6 +195,25 @@ TEST(SupernodalCholesky, ANewAnalysisIsFollowed) {
   EXPECT_EQ(solver.fallbacks(), 0);
 }
 
+// SparseSpdSolver orders by CHOLMOD's nested dissection (sparse_spd_solver.cc), not by CHOLMOD's
+// default choice (AMD here). Which ordering is better depends on the matrix: on this grid AMD's
+// factor is 3 % smaller, on the 3D forming matrix 8 % larger (experiments/09_linear_solver).
+TEST(SparseSpdSolver, OrdersByNestedDissection) {
+  const SparseMatrix A = plate_matrix(60, 1e-3);  // 10 800 unknowns
+  SparseSpdSolver solver(SparseSolverKind::kCholmodSupernodal);
+  solver.analyze(A);
+  ASSERT_TRUE(solver.factorize(A));
+  const cholmod_factor* L = solver.held_cholmod_factor();
+  ASSERT_NE(L, nullptr);
+  EXPECT_EQ(L->ordering, CHOLMOD_NESDIS);
+  const Eigen::VectorXd b = load(static_cast<int>(A.rows()));
+  EXPECT_LT((A * solver.solve(b) - b).norm(), 1e-10 * b.norm());
+  Wrapper amd;  // CHOLMOD's default choice
+  amd.compute(A);
+  ASSERT_EQ(amd.info(), Eigen::Success);
+  EXPECT_EQ(amd.factor()->ordering, CHOLMOD_AMD);
+}
+
 TEST(SupernodalCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   const SparseMatrix A = plate_matrix(30, 1e-3);
   SparseMatrix B = A;
