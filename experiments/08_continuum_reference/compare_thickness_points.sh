@@ -9,8 +9,8 @@ set -euo pipefail
 here=$(dirname "$0")
 EXTRA_SET=numerics.normal_stress=contact SCRATCH="$here/runs/shell_points" \
   "$here/compare_option.sh" numerics.thickness_points thickness_points_contact.csv 3 5 9
-elastic="material.elastic.law=isotropic material.elastic.E_MPa=210000 material.elastic.nu=0.3 material.elastic.strains=false"
-cup="material.elastic.E_MPa=70000 material.elastic.nu=0.33 tool.holder.gap_mm=1.04"
+# shellcheck source=elastic_settings.sh
+. "$here/elastic_settings.sh"
 EXTRA_SET="numerics.normal_stress=contact $elastic" EX3_SET=$cup \
   SCRATCH="$here/runs/shell_points_ts1" \
   "$here/compare_option.sh" numerics.thickness_points thickness_points_elastic_ts1.csv 5 7 9

@@ -14,8 +14,8 @@ EXTRA_SET=numerics.normal_stress=contact SCRATCH="$here/runs/shell_contact" \
 # continuum's 1.04 mm holder gap, as compare_elastic.sh), strains plastic only:
 # results/transverse_shear_elastic.csv (labels <case>_<scale>), and at 30 / 50 / 80 elements
 # with the factor 0.3: results/transverse_shear_elastic_mesh.csv (labels <case>_<elements>).
-elastic="material.elastic.law=isotropic material.elastic.E_MPa=210000 material.elastic.nu=0.3 material.elastic.strains=false"
-cup="material.elastic.E_MPa=70000 material.elastic.nu=0.33 tool.holder.gap_mm=1.04"
+# shellcheck source=elastic_settings.sh
+. "$here/elastic_settings.sh"
 EXTRA_SET="numerics.normal_stress=contact $elastic" EX3_SET=$cup \
   SCRATCH="$here/runs/shell_elastic_shear" \
   "$here/compare_option.sh" numerics.transverse_shear_scale transverse_shear_elastic.csv 0.3 0.5 1
