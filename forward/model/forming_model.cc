@@ -631,8 +631,8 @@ void FormingModel::add_coupling(int e, const Eigen::VectorXd& qe, bool want_matr
   // K_g acts on the global velocities G_a q_a of the nodes (G_a = F_a [I, -C_a]: the nodal frame
   // and the face coupling, 5 element dofs per node, velocities first): force G_a^T sum_b k_ab
   // dv_b, matrix blocks k_ab G_a^T G_b = k_ab [I; -C_a^T] M_ab [I, -C_b] with M_ab = F_a^T F_b.
-  // C is zero except at nodes with friction_surface = face: then only the 3 x 3 velocity block
-  // k_ab M_ab is not zero (a third of the work of the 5 x 5 block).
+  // Where C_a and C_b are zero (every node unless friction_surface = face) only the 3 x 3
+  // velocity block k_ab M_ab is not zero: a third of the work of the 5 x 5 block.
   const Eigen::Matrix<double, 9, 9>& k = coupling_k_[static_cast<std::size_t>(e)];
   const auto& conn = mesh_.elements[e];
   std::array<const Mat3*, 9> F;

@@ -222,7 +222,7 @@ void check_run_size(const Scene& scene, const SceneSourceMap& where) {
                            static_cast<int>(elements), steps,
                            fmt::format("{} mm", scene.process.punch_travel_mm), cap_text, work,
                            limit, shell3d ? "shell3d" : "axisymmetric",
-                           shell3d ? "up to about 0.4 ms each on 2 cores: half an hour and more"
+                           shell3d ? "up to about 0.35 ms each on 2 cores: half an hour and more"
                                    : "about 10 us and, with output.history, 150 bytes each: "
                                      "tens of minutes and 15 GB",
                            size_key, cap_key));
@@ -260,7 +260,7 @@ const std::vector<std::string_view>& scene_consistency_rules() {
       "`max_travel_increment_per_length` x the shortest element), so a run takes at least "
       "`punch_travel_mm` / that cap steps; at most 1e6 steps, and at most 1e8 element-steps "
       "(steps x elements; axisymmetric: about 10 us and, with `output.history`, 150 bytes each) "
-      "or 5e6 element-steps for `shell3d` (0.15-0.4 ms each on 2 cores). The 3D element size is "
+      "or 5e6 element-steps for `shell3d` (0.15-0.35 ms each on 2 cores). The 3D element size is "
       "estimated as `radius_mm` / (2 sqrt(`divisions` x max(`divisions`, `radial_divisions`))) "
       "for circles and `radius_mm` / `divisions` for squares.",
       "`radial_divisions` other than `divisions` needs a circular blank.",

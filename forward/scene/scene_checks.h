@@ -12,7 +12,7 @@ namespace vs {
 
 // Bounds on the size of a run (check_scene_consistency): steps of the travel grid, and steps x
 // elements. Measured on a 2-core machine: ~10 us per axisymmetric element-step (plus 150 bytes
-// of history each with output.history), 0.15-0.4 ms per shell3d element-step (2-core AMD EPYC,
+// of history each with output.history), 0.15-0.35 ms per shell3d element-step (2-core AMD EPYC,
 // 27 Nov 2026; ~2 ms with the explicit update of the first sessions).
 inline constexpr double kMaxRunSteps = 1e6;
 inline constexpr double kMaxElementStepsAxisym = 1e8;
