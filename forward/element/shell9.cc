@@ -478,8 +478,9 @@ PointLaw evaluate_point(const Shell9Material& mat, const Shell9State& st,
 struct Workspace {
   Mitc9Tying tying;
   CovPoly assumed;
-  Eigen::MatrixXd DL;         // (dV D_p) B_p, one row per strain row of L
+  Eigen::MatrixXd DL;         // (dV D_p) B_p, one row per row of L
   Eigen::VectorXd rate, gen;  // L q and the row forces (dV times stresses)
+  Eigen::MatrixXd shear;      // sqrt(dV) B_s, 2 rows per shear point (shell9_operators)
   Shell9Operators ops;        // shell9_evaluate(g, ...)
 };
 
@@ -503,20 +504,18 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
   const Gauss& sr = gauss(separate_shear ? 2 : mr.n);
   ops->ndof = n;
   ops->inplane_points = nip;
-  ops->shear_points = sr.n * sr.n;
-  // Rows: per flow point its 3 in-plane rows (and, without a separate shear rule, its 2 shear
-  // rows); the selective rule's shear rows follow, 2 per shear point and thickness point.
-  const int R = separate_shear ? 3 * nip * nt + 2 * sr.n * sr.n * nt : 5 * nip * nt;
-  ops->L.resize(R, n);
+  // L: 3 in-plane rows per flow point. The shear rows (2 per shear point and thickness point)
+  // are scaled by sqrt(dV) into ws.shear and summed into S = sum dV B_s^T B_s at the end.
+  ops->L.resize(3 * nip * nt, n);
+  ws.shear.resize(2 * sr.n * sr.n * nt, n);
   ops->flow.clear();
-  ops->shear.clear();
   ops->frame.assign(static_cast<std::size_t>(nip), Mat3::Identity());
   ops->shape.resize(static_cast<std::size_t>(nip));
-  int rows = 0;
-  auto add_shear = [&](const auto& Bs, double dV, double h_weight, int point) {
-    ops->L.middleRows(rows, 2) = Bs;
-    ops->shear.push_back({rows, point, dV, h_weight});
-    rows += 2;
+  int rows = 0, shear_rows = 0;
+  auto add_shear = [&](const auto& Bs, double dV) {
+    assert(dV > 0.0);
+    ws.shear.middleRows(shear_rows, 2) = std::sqrt(dV) * Bs;
+    shear_rows += 2;
   };
   if (mitc) mitc9_tying_poly(g, n, &ws.assumed, &ws.tying);
   int ip = 0;
@@ -564,14 +563,13 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
               f.to_mid[static_cast<std::size_t>(2 * u + w)] = mid.col(u).dot(b.frame.col(w));
         }
         rows += 3;
-        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV, dz, ip);
+        if (!separate_shear) add_shear(Bl.bottomRows<2>(), dV);
       }
     }
   }
   if (separate_shear) {
-    int spi = 0;
     for (int j = 0; j < sr.n; ++j) {
-      for (int i = 0; i < sr.n; ++i, ++spi) {
+      for (int i = 0; i < sr.n; ++i) {
         const Shape9 sh = lagrange9(sr.x[i], sr.x[j]);
         const SurfacePoint sp = surface_point(g, sh);
         covariant_poly(g, sh, sp, n, &ws.assumed);
@@ -583,12 +581,15 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
           const BMat Bcov = A.B[0] + t * A.B[1] + (t * t) * A.B[2];
           const Eigen::Matrix<double, 2, Eigen::Dynamic, 0, 2, kMaxDof> Bs =
               b.T.bottomRows<2>() * Bcov;
-          add_shear(Bs, b.detJ * sr.w[i] * sr.w[j] * wt, 0.5 * sp.h * wt, spi);
+          add_shear(Bs, b.detJ * sr.w[i] * sr.w[j] * wt);
         }
       }
     }
   }
-  assert(rows == R);
+  assert(rows == ops->L.rows() && shear_rows == ws.shear.rows());
+  ops->shear_gram.setZero(n, n);
+  ops->shear_gram.selfadjointView<Eigen::Lower>().rankUpdate(ws.shear.transpose());
+  ops->shear_gram.triangularView<Eigen::StrictlyUpper>() = ops->shear_gram.transpose();
   // Drilling: 1/2 k (V3 . omega)^2 at 6-dof nodes (section 6.3: a small artificial in-plane
   // rotational stiffness); numerics.md 4.2 suggests 1e-3..1e-4 mu h A_e.
   ops->drill.clear();
@@ -603,6 +604,14 @@ void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessR
   }
 }
 
+void shell9_substitute_velocity(int velocity, int rotation, const Eigen::Matrix<double, 3, 2>& C,
+                                Shell9Operators* ops) {
+  ops->L.middleCols<2>(rotation) -= ops->L.middleCols<3>(velocity) * C;
+  Eigen::MatrixXd& S = ops->shear_gram;  // T^T S T: the columns, then the rows
+  S.middleCols<2>(rotation) -= S.middleCols<3>(velocity) * C;
+  S.middleRows<2>(rotation) -= C.transpose() * S.middleRows<3>(velocity);
+}
+
 void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
                      const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
                      Shell9Output* out, double tangent_weight, const Shell9Operators* next) {
@@ -611,25 +620,28 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   assert(q.size() == n);
   const bool want_k = kind != Shell9Stiffness::kNone;
   const auto R = ops.L.rows();
-  const double Gs = mat.shear_correction * mat.shear_reference();
   out->point_rate.assign(ops.flow.size(), 0.0);
   out->resultant.assign(static_cast<std::size_t>(ops.inplane_points), Shell9Resultant{});
-  out->shear_force.assign(static_cast<std::size_t>(ops.shear_points), Eigen::Vector2d::Zero());
   out->potential = 0.0;
   ws.rate.noalias() = ops.L * q;
   ws.gen.resize(R);
   if (want_k) ws.DL.resize(R, n);
-  // The next element's L, one slice of cache lines per flow point (shell9.h).
-  const char* ahead = next != nullptr ? reinterpret_cast<const char*>(next->L.data()) : nullptr;
-  const std::size_t ahead_bytes =
-      next != nullptr ? static_cast<std::size_t>(next->L.size()) * sizeof(double) : 0;
-  const std::size_t lines = (ahead_bytes + 63) / 64;
+  // The next element's L and S, one slice of cache lines per flow point (shell9.h).
+  const Eigen::MatrixXd* ahead[2] = {next != nullptr ? &next->L : nullptr,
+                                     next != nullptr ? &next->shear_gram : nullptr};
+  std::size_t lines[2] = {0, 0};
+  for (int m = 0; m < 2; ++m)
+    if (ahead[m] != nullptr)
+      lines[m] = (static_cast<std::size_t>(ahead[m]->size()) * sizeof(double) + 63) / 64;
+  const std::size_t total_lines = lines[0] + lines[1];
   const std::size_t per_point =
-      ops.flow.empty() ? 0 : (lines + ops.flow.size() - 1) / ops.flow.size();
+      ops.flow.empty() ? 0 : (total_lines + ops.flow.size() - 1) / ops.flow.size();
   std::size_t line = 0;
   for (std::size_t f = 0; f < ops.flow.size(); ++f) {
-    for (std::size_t k = 0; k < per_point && line < lines; ++k, ++line) {
-      __builtin_prefetch(ahead + 64 * line, 0, 2);
+    for (std::size_t k = 0; k < per_point && line < total_lines; ++k, ++line) {
+      const int m = line < lines[0] ? 0 : 1;
+      const std::size_t l = m == 0 ? line : line - lines[0];
+      __builtin_prefetch(reinterpret_cast<const char*>(ahead[m]->data()) + 64 * l, 0, 2);
     }
     const Shell9Operators::FlowRow& fr = ops.flow[f];
     const Vec3 d = ws.rate.segment<3>(fr.row);
@@ -653,20 +665,19 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   for (int ip = 0; ip < ops.inplane_points; ++ip) {
     out->resultant[static_cast<std::size_t>(ip)].frame = ops.frame[static_cast<std::size_t>(ip)];
   }
-  // Transverse shear rows: Q = Gs gamma (penalty viscosity / elastic k G).
-  for (const Shell9Operators::ShearRow& sh : ops.shear) {
-    const Eigen::Vector2d gam = ws.rate.segment<2>(sh.row);
-    ws.gen.segment<2>(sh.row) = (Gs * sh.dV) * gam;
-    if (want_k) ws.DL.middleRows(sh.row, 2) = (Gs * sh.dV) * ops.L.middleRows(sh.row, 2);
-    out->potential += 0.5 * Gs * gam.squaredNorm() * sh.dV;
-    out->shear_force[static_cast<std::size_t>(sh.point)] += (Gs * sh.dz) * gam;
-  }
+  // Transverse shear (Shell9Operators): force Gs S q, power Gs q^T S q / 2, matrix Gs S, with Gs
+  // the penalty viscosity (elastic: k G).
+  const double Gs = mat.shear_correction * mat.shear_reference();
   out->force.noalias() = ops.L.transpose() * ws.gen;
+  ws.rate.resize(n);  // the shear force S q (the rates are used up)
+  ws.rate.noalias() = ops.shear_gram * q;
+  out->force += Gs * ws.rate;
+  out->potential += 0.5 * Gs * q.dot(ws.rate);
   if (want_k) {
-    // K = sum_p B_p^T (dV D_p) B_p over all strain rows of all points, as one product of the
-    // stacked operators: the lower triangle by one triangular product (Eigen's blocked kernel),
-    // then mirrored.
-    out->stiffness.setZero(n, n);
+    // K = Gs S + sum_p B_p^T (dV D_p) B_p over the rows of all flow points, as one product of
+    // the stacked operators: the lower triangle by one triangular product (Eigen's blocked
+    // kernel), then mirrored.
+    out->stiffness.noalias() = Gs * ops.shear_gram;
     out->stiffness.triangularView<Eigen::Lower>() += ops.L.transpose() * ws.DL;
     out->stiffness.triangularView<Eigen::StrictlyUpper>() = out->stiffness.transpose();
   }

@@ -124,20 +124,27 @@ struct Shell9Output {
   Eigen::MatrixXd stiffness;       // secant or tangent
   double potential = 0.0;          // integral of the power potential (elastic: strain energy)
   std::vector<double> point_rate;  // effective rate at each flow point (viscous)
-  std::vector<Shell9Resultant> resultant;    // at each in-plane (flow) point
-  std::vector<Eigen::Vector2d> shear_force;  // (Q13, Q23) [N/mm] at each shear point
+  std::vector<Shell9Resultant> resultant;  // at each in-plane (flow) point
 };
 
 // Number of in-plane points of the flow (membrane/bending) rule: 9, or 4 for kReduced.
 int shell9_inplane_points(Shell9Rule rule);
 
-// The velocity-independent part of an element evaluation in one configuration: the strain-rate
-// operators of all points stacked as the rows of L (local frame, 3 in-plane rows per flow point,
-// 2 transverse-shear rows per shear point; B(t) = B0 + t B1 + t^2 B2, MITC9 tying, basis), their
-// volume and resultant weights, and the drilling terms. A nonlinear solve evaluates one
+// The velocity-independent part of an element evaluation in one configuration: the in-plane
+// strain-rate operators of all flow points stacked as the rows of L (local frame, 3 rows per flow
+// point; B(t) = B0 + t B1 + t^2 B2, MITC9 tying, basis), their volume and resultant weights, the
+// transverse-shear Gram matrix and the drilling terms. A nonlinear solve evaluates one
 // configuration many times: building this once per configuration (shell9_operators) and
-// evaluating with it (about 48 KB per MITC9 element with 3 thickness points) leaves per
-// evaluation only L q, the point laws, L^T (row forces) and, for a matrix, L^T (D L).
+// evaluating with it (about 45 KB per MITC9 element with 3 thickness points) leaves per
+// evaluation only L q, the point laws, L^T (row forces), the shear Gram matrix times q and, for a
+// matrix, L^T (D L).
+//
+// Transverse shear is linear with a viscosity Gs that is constant within a solve (the element's
+// penalty viscosity, or k G), so its rows never need the point laws: with gamma = B_s q at a shear
+// point of volume weight dV, the power sum_s Gs dV |gamma|^2 / 2 = Gs q^T S q / 2 with
+// S = sum_s dV B_s^T B_s, its force Gs S q and its matrix Gs S. S replaces the shear rows (2 per
+// shear point and thickness point, 40 % of L's rows for MITC9): the element's matrix product runs
+// over the flow rows only.
 struct Shell9Operators {
   struct FlowRow {  // a flow point (index in Shell9State arrays = position in `flow`)
     int row = 0;    // its 3 in-plane rows start here
@@ -153,19 +160,15 @@ struct Shell9Operators {
     bool turned = false;  // P != I
     std::array<double, 4> to_mid{1.0, 0.0, 0.0, 1.0};
   };
-  struct ShearRow {
-    int row = 0, point = 0;     // its 2 rows; shear point (shear_force)
-    double dV = 0.0, dz = 0.0;  // volume weight; h/2 dt
-  };
   struct DrillNode {
     int offset = 0;  // the node's rotation dofs
     Vec3 director = Vec3::UnitZ();
     double thickness_area = 0.0;  // h_a (element area) / 9
   };
-  int ndof = 0, inplane_points = 0, shear_points = 0;
-  Eigen::MatrixXd L;
+  int ndof = 0, inplane_points = 0;
+  Eigen::MatrixXd L;           // 3 rows per flow point
+  Eigen::MatrixXd shear_gram;  // S = sum_s dV B_s^T B_s (ndof x ndof, symmetric, both halves)
   std::vector<FlowRow> flow;
-  std::vector<ShearRow> shear;
   std::vector<Mat3> frame;  // local frame on the mid-surface (t = 0) at each in-plane point
   std::vector<std::array<double, 9>> shape;  // shape functions N_a at each in-plane point
   std::vector<DrillNode> drill;
@@ -174,14 +177,21 @@ struct Shell9Operators {
 void shell9_operators(const Shell9Geometry& g, Shell9Rule rule, const ThicknessRule& thick,
                       Shell9Operators* ops);
 
+// Substitutes u = u' - C r for the velocity columns u (3, from `velocity`) of a node in terms of
+// new unknowns u' and its rotation columns r (2, from `rotation`): the operators of the element
+// in the unknowns (u', r), L T and T^T S T with T = I except the block -C at (velocity, rotation).
+// (FormingModel's face coupling: a node's velocity unknowns are its touching face's.)
+void shell9_substitute_velocity(int velocity, int rotation, const Eigen::Matrix<double, 3, 2>& C,
+                                Shell9Operators* ops);
+
 // Evaluates the element at element velocities q (size ops.ndof).
 //
 // `next`, if given, is the operators of the element the caller evaluates next: the loop over the
-// flow points asks the memory system for its L a slice at a time, so that its first L q finds it
-// in cache. A residual evaluation of a large mesh streams every element's L from memory (about
-// 48 KB for MITC9 with 3 thickness points, 37 MB at 768 elements); without the hint the first
-// L q of an element waits on it, 3.7 us against 0.9 us with it (16-division quarter disc, one
-// thread). It changes no result.
+// flow points asks the memory system for its L and S a slice at a time, so that its first L q
+// finds them in cache. A residual evaluation of a large mesh streams every element's operators
+// from memory (about 45 KB for MITC9 with 3 thickness points, 35 MB at 768 elements); without the
+// hint the first L q of an element waits on it, 3.7 us against 0.9 us with it (16-division
+// quarter disc, one thread, measured with L alone). It changes no result.
 void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
                      const Shell9State& state, const Eigen::VectorXd& q, Shell9Stiffness kind,
                      Shell9Output* out, double tangent_weight = 1.0,

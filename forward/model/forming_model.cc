@@ -396,7 +396,7 @@ void FormingModel::prepare(const FormingState& s) {
     for (int a = 0; a < 9; ++a) {
       const FaceCoupling& C = face_[static_cast<std::size_t>(conn[a])];
       if (C.isZero(0.0)) continue;
-      ops.L.middleCols<2>(5 * a + 3) -= ops.L.middleCols<3>(5 * a) * C;
+      shell9_substitute_velocity(5 * a, 5 * a + 3, C, &ops);
     }
   }
   // The penalties on the area rate (gap_holder3.h) of the state's configuration: the fixed-gap

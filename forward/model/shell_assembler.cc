@@ -1,6 +1,7 @@
 #include "model/shell_assembler.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace vs::shell3d {
 
@@ -100,26 +101,46 @@ double ShellAssembler::assemble(const ElementKernel& kernel, const Eigen::Vector
 
 void ShellAssembler::apply_constraints(const std::vector<char>& fixed,
                                        const std::vector<double>& value, Eigen::VectorXd* rhs) {
+  std::vector<int> columns;  // the fixed dofs, ascending
+  for (int j = 0; j < n_; ++j)
+    if (fixed[j]) columns.push_back(j);
+  const int nf = static_cast<int>(columns.size());
+  const int* outer = K_.outerIndexPtr();
+  const int* inner = K_.innerIndexPtr();
+  double* val = K_.valuePtr();
   // The known columns to the right-hand side, by one thread (the rows of different columns
   // coincide); a zero value moves nothing.
-  for (int j = 0; j < n_; ++j) {
-    if (!fixed[j] || value[j] == 0.0) continue;
-    for (SparseMatrix::InnerIterator it(K_, j); it; ++it) {
-      const auto i = static_cast<int>(it.row());
-      if (!fixed[i]) (*rhs)(i) -= it.value() * value[j];
+  for (int j : columns) {
+    if (value[j] == 0.0) continue;
+    for (int k = outer[j]; k < outer[j + 1]; ++k)
+      if (!fixed[inner[k]]) (*rhs)(inner[k]) -= val[k] * value[j];
+  }
+  // The fixed columns: every value but the diagonal is zeroed; each column writes only its own
+  // values and rhs(j).
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < nf; ++c) {
+    const int j = columns[static_cast<std::size_t>(c)];
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      if (inner[k] != j) {
+        val[k] = 0.0;
+      } else {
+        if (val[k] == 0.0) val[k] = 1.0;
+        (*rhs)(j) = val[k] * value[j];
+      }
     }
   }
-  // Rows and columns of the fixed dofs: every column writes only its own values and rhs(j).
+  // The fixed rows: the pattern is symmetric, so row j holds values exactly in the columns i of
+  // column j's rows; those of free columns are found by bisection (the rows are sorted). Each
+  // value (j, i) has one (i, j): no two iterations write the same value.
 #pragma omp parallel for schedule(static)
-  for (int j = 0; j < n_; ++j) {
-    for (SparseMatrix::InnerIterator it(K_, j); it; ++it) {
-      const auto i = static_cast<int>(it.row());
-      if (i == j && fixed[j]) {
-        if (it.value() == 0.0) it.valueRef() = 1.0;
-        (*rhs)(j) = it.value() * value[j];
-      } else if (fixed[i] || fixed[j]) {
-        it.valueRef() = 0.0;
-      }
+  for (int c = 0; c < nf; ++c) {
+    const int j = columns[static_cast<std::size_t>(c)];
+    for (int k = outer[j]; k < outer[j + 1]; ++k) {
+      const int i = inner[k];
+      if (fixed[i]) continue;
+      const int* at = std::lower_bound(inner + outer[i], inner + outer[i + 1], j);
+      assert(at != inner + outer[i + 1] && *at == j);
+      val[at - inner] = 0.0;
     }
   }
 }

@@ -111,14 +111,62 @@ TEST(Shell9Element, ViscousTangentAndForceAreDerivatives) {
   }
 }
 
+// A viscous element material for the operator tests (the laws point to each other: not copied).
+struct ViscousMaterial {
+  ViscousLaw law{RateSpec{}, 1e-3, 1.6};
+  HillPlaneStressLaw hill{law};
+  Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
+  ViscousMaterial() = default;
+  ViscousMaterial(const ViscousMaterial&) = delete;
+  ViscousMaterial& operator=(const ViscousMaterial&) = delete;
+};
+
+TEST(Shell9Element, SubstitutedVelocityIsTheTransformedElement) {
+  // shell9_substitute_velocity: with u = u' - C r at two nodes (q = T q'), the element in the
+  // unknowns (u', r) has force T^T f(T q'), matrix T^T K T and the same power potential. Checks
+  // the in-plane operators and the shear Gram matrix (its rows and columns) together.
+  const Shell9Geometry g = curved_geometry();
+  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
+  const ViscousMaterial viscous;
+  const Shell9Material& mat = viscous.mat;
+  Shell9Operators ops, sub;
+  shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
+  sub = ops;
+  const int n = g.ndof();
+  Eigen::MatrixXd T = Eigen::MatrixXd::Identity(n, n);
+  int substituted = 0;
+  for (int a : {1, 4, 6}) {
+    if (g.n_rot[static_cast<std::size_t>(a)] != 2) continue;
+    Eigen::Matrix<double, 3, 2> C;
+    C << 0.3, -0.1, 0.05 * a, 0.2, -0.4, 0.1 * a;
+    shell9_substitute_velocity(g.offset(a), g.offset(a) + 3, C, &sub);
+    T.block<3, 2>(g.offset(a), g.offset(a) + 3) = -C;
+    ++substituted;
+  }
+  ASSERT_GE(substituted, 2);
+  std::vector<double> sy(ops.flow.size(), 200.0), hv(sy.size(), 3.0);
+  const Shell9State st{sy.data(), hv.data()};
+  const Eigen::VectorXd qs = 1e-2 * test_velocity(n), q = T * qs;
+  Shell9Output a, b;
+  shell9_evaluate(ops, mat, st, q, Shell9Stiffness::kTangent, &a);
+  shell9_evaluate(sub, mat, st, qs, Shell9Stiffness::kTangent, &b);
+  const Eigen::VectorXd f = T.transpose() * a.force;
+  const Eigen::MatrixXd K = T.transpose() * a.stiffness * T;
+  EXPECT_LT((b.force - f).norm(), 1e-12 * f.norm());
+  EXPECT_LT((b.stiffness - K).norm(), 1e-12 * K.norm());
+  EXPECT_NEAR(b.potential, a.potential, 1e-12 * std::abs(a.potential));
+  // The shear Gram matrix alone.
+  EXPECT_LT((sub.shear_gram - T.transpose() * ops.shear_gram * T).norm(),
+            1e-12 * ops.shear_gram.norm());
+}
+
 TEST(Shell9Element, PrefetchingTheNextOperatorsChangesNothing) {
-  // shell9_evaluate's `next` only asks the memory system for the next element's L: forces,
+  // shell9_evaluate's `next` only asks the memory system for the next element's L and S: forces,
   // matrix, potential and point rates are the same bits with and without it, for either kind.
   const Shell9Geometry g = curved_geometry();
   const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
-  const ViscousLaw law(RateSpec{}, 1e-3, 1.6);
-  const HillPlaneStressLaw hill(law);
-  const Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
+  const ViscousMaterial viscous;
+  const Shell9Material& mat = viscous.mat;
   Shell9Operators ops, next;
   shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
   shell9_operators(g, Shell9Rule::kMitc9, thick, &next);

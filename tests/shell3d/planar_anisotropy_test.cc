@@ -368,11 +368,15 @@ TEST(PlanarAnisotropy3d, Yld2000CalibrationCupFirstStepConverges) {
   EXPECT_LE(run.steps.front().iterations, 40);
 }
 
-// The same in a forming run (ex4a, 2 divisions, 3 mm): the Newton iterates differ by round-off
-// only, so the results agree to the nonlinear tolerance (measured 1e-12 relative or better).
+// The same in a forming run (ex4a, 2 divisions, 3 mm). The two laws differ by round-off, which
+// can tip a decision of the solver (a Krylov or line-search stop, the iteration that meets the
+// tolerance) one way in one run and the other in the other: the runs then agree to the nonlinear
+// tolerance, not to round-off (at the default 1e-6 the force once differed by 1.7e-8 relative).
+// Both run at a tolerance of 1e-10 (measured 6.7e-10 relative).
 TEST(PlanarAnisotropy3d, EqualRValuesRunLikeNormalAnisotropy) {
   Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
   s.blank.divisions = 2;
+  s.numerics.tolerance = 1e-10;  // the runs agree to it (see above)
   s.process.punch_travel_mm = 3.0;
   s.process.output_travels_mm = {3.0};
   s.tools.at(0).friction = 0.2;
@@ -397,10 +401,12 @@ TEST(PlanarAnisotropy3d, EqualRValuesRunLikeNormalAnisotropy) {
 // Turning RD from x to y mirrors the sheet about the diagonal: the thickness strain along x with
 // RD = 0 is the one along y with RD = 90 deg. The two lines of one run differ (the anisotropy
 // shows, where an isotropic sheet's differ by round-off; the mesh is symmetric about the
-// diagonal): Hill 1948 with the ESAFORM r-values on ex4a (2 divisions, friction 0.2, 4 mm).
+// diagonal): Hill 1948 with the ESAFORM r-values on ex4a (2 divisions, friction 0.2, 4 mm), at a
+// nonlinear tolerance of 1e-10 (as EqualRValuesRunLikeNormalAnisotropy; measured 9e-13).
 TEST(PlanarAnisotropy3d, RollingDirectionAlongYMirrorsRollingDirectionAlongX) {
   Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
   s.blank.divisions = 2;
+  s.numerics.tolerance = 1e-10;
   s.process.punch_travel_mm = 4.0;
   s.process.output_travels_mm = {4.0};
   s.tools.at(0).friction = 0.2;
@@ -478,10 +484,12 @@ TEST(PlanarAnisotropy3d, CupFlangeStaysOutLongestAlongRdAndTd) {
 }
 
 // Yld2000-2d with isotropic data and exponent 2 is von Mises (alpha = 1): its local dual solve
-// must reproduce the closed-form law of R = 1 in a forming run (measured: equal to 1e-13).
+// must reproduce the closed-form law of R = 1 in a forming run, at a nonlinear tolerance of 1e-10
+// (as EqualRValuesRunLikeNormalAnisotropy; measured 4.6e-12 relative).
 TEST(PlanarAnisotropy3d, IsotropicYld2000WithExponentTwoRunsLikeVonMises) {
   Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4a_quarter_disc_sticking.toml");
   s.blank.divisions = 2;
+  s.numerics.tolerance = 1e-10;
   s.process.punch_travel_mm = 3.0;
   s.process.output_travels_mm = {3.0};
   s.tools.at(0).friction = 0.2;
