@@ -111,27 +111,34 @@ TEST(Shell9Element, ViscousTangentAndForceAreDerivatives) {
   }
 }
 
-// A viscous element material for the operator tests (the laws point to each other: not copied).
-struct ViscousMaterial {
+// A viscous MITC9 element (3 Simpson points) with its operators and point state, for the
+// operator tests (the laws point to each other: not copied).
+struct ViscousElement {
+  Shell9Geometry g = curved_geometry();
+  ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
   ViscousLaw law{RateSpec{}, 1e-3, 1.6};
   HillPlaneStressLaw hill{law};
   Shell9Material mat = Shell9Material::Viscous(hill, 50.0);
-  ViscousMaterial() = default;
-  ViscousMaterial(const ViscousMaterial&) = delete;
-  ViscousMaterial& operator=(const ViscousMaterial&) = delete;
+  Shell9Operators ops;
+  std::vector<double> sy, hv;
+  ViscousElement() {
+    shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
+    sy.assign(ops.flow.size(), 200.0);
+    hv.assign(ops.flow.size(), 3.0);
+  }
+  ViscousElement(const ViscousElement&) = delete;
+  ViscousElement& operator=(const ViscousElement&) = delete;
+  Shell9State state() const { return Shell9State{sy.data(), hv.data()}; }
 };
 
 TEST(Shell9Element, SubstitutedVelocityIsTheTransformedElement) {
   // shell9_substitute_velocity: with u = u' - C r at two nodes (q = T q'), the element in the
   // unknowns (u', r) has force T^T f(T q'), matrix T^T K T and the same power potential. Checks
   // the in-plane operators and the shear Gram matrix (its rows and columns) together.
-  const Shell9Geometry g = curved_geometry();
-  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
-  const ViscousMaterial viscous;
-  const Shell9Material& mat = viscous.mat;
-  Shell9Operators ops, sub;
-  shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
-  sub = ops;
+  const ViscousElement el;
+  const Shell9Geometry& g = el.g;
+  const Shell9Operators& ops = el.ops;
+  Shell9Operators sub = ops;
   const int n = g.ndof();
   Eigen::MatrixXd T = Eigen::MatrixXd::Identity(n, n);
   int substituted = 0;
@@ -144,12 +151,11 @@ TEST(Shell9Element, SubstitutedVelocityIsTheTransformedElement) {
     ++substituted;
   }
   ASSERT_GE(substituted, 2);
-  std::vector<double> sy(ops.flow.size(), 200.0), hv(sy.size(), 3.0);
-  const Shell9State st{sy.data(), hv.data()};
+  const Shell9State st = el.state();
   const Eigen::VectorXd qs = 1e-2 * test_velocity(n), q = T * qs;
   Shell9Output a, b;
-  shell9_evaluate(ops, mat, st, q, Shell9Stiffness::kTangent, &a);
-  shell9_evaluate(sub, mat, st, qs, Shell9Stiffness::kTangent, &b);
+  shell9_evaluate(ops, el.mat, st, q, Shell9Stiffness::kTangent, &a);
+  shell9_evaluate(sub, el.mat, st, qs, Shell9Stiffness::kTangent, &b);
   const Eigen::VectorXd f = T.transpose() * a.force;
   const Eigen::MatrixXd K = T.transpose() * a.stiffness * T;
   EXPECT_LT((b.force - f).norm(), 1e-12 * f.norm());
@@ -163,16 +169,13 @@ TEST(Shell9Element, SubstitutedVelocityIsTheTransformedElement) {
 TEST(Shell9Element, PrefetchingTheNextOperatorsChangesNothing) {
   // shell9_evaluate's `next` only asks the memory system for the next element's L and S: forces,
   // matrix, potential and point rates are the same bits with and without it, for either kind.
-  const Shell9Geometry g = curved_geometry();
-  const ThicknessRule thick = thickness_rule(ThicknessKind::kSimpson, 3);
-  const ViscousMaterial viscous;
-  const Shell9Material& mat = viscous.mat;
-  Shell9Operators ops, next;
-  shell9_operators(g, Shell9Rule::kMitc9, thick, &ops);
-  shell9_operators(g, Shell9Rule::kMitc9, thick, &next);
-  std::vector<double> sy(ops.flow.size(), 200.0), hv(sy.size(), 3.0);
-  const Shell9State st{sy.data(), hv.data()};
-  const Eigen::VectorXd q = 1e-2 * test_velocity(g.ndof());
+  const ViscousElement el;
+  const Shell9Operators& ops = el.ops;
+  const Shell9Material& mat = el.mat;
+  Shell9Operators next;
+  shell9_operators(el.g, Shell9Rule::kMitc9, el.thick, &next);
+  const Shell9State st = el.state();
+  const Eigen::VectorXd q = 1e-2 * test_velocity(el.g.ndof());
   for (auto kind : {Shell9Stiffness::kNone, Shell9Stiffness::kTangent}) {
     Shell9Output plain, ahead;
     shell9_evaluate(ops, mat, st, q, kind, &plain);
