@@ -480,6 +480,7 @@ struct Workspace {
   CovPoly assumed;
   Eigen::MatrixXd DL;         // (dV D_p) B_p, one row per row of L
   Eigen::VectorXd rate, gen;  // L q and the row forces (dV times stresses)
+  Eigen::VectorXd Sq;         // the shear Gram matrix times q
   Eigen::MatrixXd shear;      // sqrt(dV) B_s, 2 rows per shear point (shell9_operators)
   Shell9Operators ops;        // shell9_evaluate(g, ...)
 };
@@ -669,10 +670,9 @@ void shell9_evaluate(const Shell9Operators& ops, const Shell9Material& mat,
   // the penalty viscosity (elastic: k G).
   const double Gs = mat.shear_correction * mat.shear_reference();
   out->force.noalias() = ops.L.transpose() * ws.gen;
-  ws.rate.resize(n);  // the shear force S q (the rates are used up)
-  ws.rate.noalias() = ops.shear_gram * q;
-  out->force += Gs * ws.rate;
-  out->potential += 0.5 * Gs * q.dot(ws.rate);
+  ws.Sq.noalias() = ops.shear_gram * q;
+  out->force += Gs * ws.Sq;
+  out->potential += 0.5 * Gs * q.dot(ws.Sq);
   if (want_k) {
     // K = Gs S + sum_p B_p^T (dV D_p) B_p over the rows of all flow points, as one product of
     // the stacked operators: the lower triangle by one triangular product (Eigen's blocked
