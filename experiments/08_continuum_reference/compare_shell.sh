@@ -59,3 +59,5 @@ cmp r40_l4_vs_r60_l4 "$res/ex1_mu010_r60_l4" "$res/ex1_mu010_r40_l4" "$V" \
     --travels 5,10,15,20,25 --strain-travels 10,20,25
 cmp r60_l2_vs_r60_l4 "$res/ex1_mu010_r60_l4" "$res/ex1_mu010_r60_l2" "$V" \
     --travels 5,10,15,20,25 --strain-travels 10,20,25
+cmp mu030_r40_l4_vs_r60_l4 "$res/ex1_mu030_r60_l4" "$res/ex1_mu030_r40_l4" "$V" \
+    --travels 5,10,15,20,25 --strain-travels 10,20,25

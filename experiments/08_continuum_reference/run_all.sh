@@ -11,6 +11,7 @@ cases=(
   "ex1_mu010_r60_l4|--case ex1 --friction 0.1 --radial 60 --layers 4"
   "ex1_mu030_r60_l4|--case ex1 --friction 0.3 --radial 60 --layers 4"
   "ex1_mu010_r40_l4|--case ex1 --friction 0.1 --radial 40 --layers 4"
+  "ex1_mu030_r40_l4|--case ex1 --friction 0.3 --radial 40 --layers 4"
   "ex1_mu010_r60_l2|--case ex1 --friction 0.1 --radial 60 --layers 2"
   "ex1_mu010_r60_l2_t0425|--case ex1 --friction 0.1 --radial 60 --layers 2 --thickness 0.425"
   "ex3_mu007_r54_l4|--case ex3 --friction 0.07 --radial 54 --layers 4 --travel 40"
