@@ -4,17 +4,22 @@
 # force and of the minimum thickness from their least-squares lines ("jitter"), and the lines'
 # slopes per 1e-5 of friction, both relative to the mean value (README, "The Newton tolerance of
 # 3D runs"). Needs vshell: BUILD_DIR (default ../../build)/app/vshell. About 4 s at 8 divisions.
+# SCENE=path runs another scene (DIVISIONS "-": the scene's mesh), e.g. the axisymmetric ex1:
+#   SCENE=data/scenes/ex1_hemispherical_stretching.toml tolerance_sweep.sh - 0.1 20 1e-6
 # Usage: tolerance_sweep.sh DIVISIONS BASE TRAVEL TOLERANCE   (e.g. 8 0.1 8 1e-5)
 set -euo pipefail
-[ $# -eq 4 ] || { sed -n 2,8p "$0"; exit 2; }
+[ $# -eq 4 ] || { sed -n 2,10p "$0"; exit 2; }
 d=$1 base=$2 travel=$3 tol=$4
 here=$(cd "$(dirname "$0")" && pwd)
 vshell=${BUILD_DIR:-$here/../../build}/app/vshell
 scratch=${SCRATCH:-$(mktemp -d)}
+scene=${SCENE:-$here/../../data/scenes/ex4a_quarter_disc_sticking.toml}
+mesh=()
+[ "$d" = - ] || mesh=(--set blank.divisions="$d")
 for i in 0 1 2 3; do
   f=$(python3 -c "print($base + $i * 1e-5)")
-  OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} "$vshell" run "$here/../../data/scenes/ex4a_quarter_disc_sticking.toml" \
-    --set blank.divisions="$d" --set tool.punch.friction="$f" --set process.punch_travel_mm="$travel" \
+  OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} "$vshell" run "$scene" "${mesh[@]}" \
+    --set tool.punch.friction="$f" --set process.punch_travel_mm="$travel" \
     --set "process.output_travels_mm=[$travel]" --set numerics.tolerance="$tol" -q \
     -o "$scratch/run_$i" > /dev/null
 done
