@@ -6,13 +6,19 @@
 # 3D runs"). Needs vshell: BUILD_DIR (default ../../build)/app/vshell. About 4 s at 8 divisions.
 # SCENE=path runs another scene (DIVISIONS "-": the scene's mesh), e.g. the axisymmetric ex1:
 #   SCENE=data/scenes/ex1_hemispherical_stretching.toml tolerance_sweep.sh - 0.1 20 1e-6
+# The runs go to a temporary folder (removed at the end), or to SCRATCH if set (kept).
 # Usage: tolerance_sweep.sh DIVISIONS BASE TRAVEL TOLERANCE   (e.g. 8 0.1 8 1e-5)
 set -euo pipefail
 [ $# -eq 4 ] || { sed -n 2,10p "$0"; exit 2; }
 d=$1 base=$2 travel=$3 tol=$4
 here=$(cd "$(dirname "$0")" && pwd)
 vshell=${BUILD_DIR:-$here/../../build}/app/vshell
-scratch=${SCRATCH:-$(mktemp -d)}
+if [ -n "${SCRATCH:-}" ]; then
+  scratch=$SCRATCH
+else
+  scratch=$(mktemp -d)
+  trap 'rm -rf "$scratch"' EXIT
+fi
 scene=${SCENE:-$here/../../data/scenes/ex4a_quarter_disc_sticking.toml}
 mesh=()
 [ "$d" = - ] || mesh=(--set blank.divisions="$d")
