@@ -12,6 +12,7 @@
 
 #include "harness.h"
 #include "metrics.h"
+#include "output/suspect_results.h"
 
 namespace vsx {
 
@@ -38,7 +39,7 @@ struct StabilityRow {
   double volume_drift = 0.0;  // max |V - V0| / V0
   double volume_drift_later = 0.0;    // the same from the first advanced step on
   double min_thickness_ratio = kNaN;  // min h / h0 over the run
-  double equilibrium = kNaN;  // max |F_vertical - F_punch,inside| / F_punch, free-region circles
+  double equilibrium = kNaN;  // vs::free_wall_equilibrium_error, the largest over the outputs
   double peak_N = kNaN;
   double peak_travel_mm = kNaN;
   bool finite = true;
@@ -46,49 +47,6 @@ struct StabilityRow {
   std::vector<std::string> warnings;  // harmless-looking departures from exactness
   std::string verdict;                // "ok", "ok*" (warnings), "stopped", "aborted", "GARBAGE"
 };
-
-// Max relative deviation of the vertical force through element-midpoint circles from the punch
-// force, over the free (contact-free) stretch of at least 3 elements that carries the largest
-// mean |vertical force|: the unsupported wall between punch and die (a free flat bottom carries
-// nothing, a stretch beyond the die only part of the load). The elements next to a contact zone
-// are skipped (their end node carries a reaction). The force through the circle of element e is
-// compared with the punch force on the nodes inside it (Profile::punch_force_node_N, nodes 0..e;
-// the whole punch force if that is empty): once a cup wall outside the circle is ironed against
-// the punch wall, the punch acts there too (friction).
-inline double equilibrium_error(const vs::Profile& p, double punch_force) {
-  const std::vector<int>& c = p.contact;
-  const std::size_t n = c.size();
-  if (p.vertical_force_N.size() != n || !(std::abs(punch_force) > 0.0)) return kNaN;
-  std::vector<double> inside(n, punch_force);
-  if (p.punch_force_node_N.size() == n + 1) {
-    double sum = 0.0;
-    for (std::size_t e = 0; e < n; ++e) inside[e] = (sum += p.punch_force_node_N[e]);
-  }
-  double best_mean = -1.0, worst = kNaN;
-  for (std::size_t i = 0; i < n;) {
-    if (c[i]) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i;
-    while (j < n && !c[j]) ++j;  // free stretch [i, j)
-    const bool at_rim = j == n;
-    if (j >= i + 3) {
-      const std::size_t a = i == 0 ? 0 : i + 1, b = at_rim ? j : j - 1;
-      double mean = 0.0, dev = 0.0;
-      for (std::size_t e = a; e < b; ++e) {
-        mean += std::abs(p.vertical_force_N[e]) / static_cast<double>(b - a);
-        dev = std::max(dev, std::abs(p.vertical_force_N[e] - inside[e]) / std::abs(punch_force));
-      }
-      if (b > a && mean > best_mean) {
-        best_mean = mean;
-        worst = dev;
-      }
-    }
-    i = j;
-  }
-  return worst;
-}
 
 inline StabilityRow evaluate_stability(const std::string& source_dir, const StabilityCase& c,
                                        double budget_s) {
@@ -132,7 +90,7 @@ inline StabilityRow evaluate_stability(const std::string& source_dir, const Stab
   for (const vs::Profile& p : r.profiles) {
     for (const vs::StepRecord& s : r.steps) {
       if (std::abs(s.punch_travel_mm - p.punch_travel_mm) <= 1e-9 * (1.0 + p.punch_travel_mm)) {
-        const double e = equilibrium_error(p, s.punch_force_N);
+        const double e = vs::free_wall_equilibrium_error(p, s.punch_force_N);
         if (e == e)
           row.equilibrium = row.equilibrium == row.equilibrium ? std::max(row.equilibrium, e) : e;
         break;
@@ -161,7 +119,7 @@ inline StabilityRow evaluate_stability(const std::string& source_dir, const Stab
     row.problems.push_back(
         fmt::format("accepted residual {:.2g} > {:.2g}", row.worst_residual, residual_limit));
   }
-  if (row.equilibrium > 0.02) {
+  if (row.equilibrium > vs::kFreeWallEquilibriumWarning) {
     row.problems.push_back(fmt::format("equilibrium off by {:.2g}", row.equilibrium));
   }
   for (std::size_t i = 1; i < r.steps.size(); ++i) {
