@@ -47,6 +47,7 @@ bool NewtonOptions::IsValid(std::string* why) const {
   if (!(krylov_tolerance > 0.0 && krylov_tolerance < 1.0))
     return fail("krylov_tolerance must be in (0, 1)");
   if (!(force_floor >= 0.0)) return fail("force_floor must be >= 0");
+  if (!(stagnation_force >= 0.0)) return fail("stagnation_force must be >= 0");
   return true;
 }
 
@@ -54,8 +55,13 @@ bool newton_converged(const NewtonOptions& options, const NewtonSummary& sum, in
   const bool small_update = sum.update_norm <= options.tolerance;
   const bool small_residual =
       options.kind == SolverKind::kPicard || sum.residual_norm <= options.tolerance;
-  const bool stagnated =
-      sum.update_norm <= 1e-3 * options.tolerance && sum.residual_norm <= 100.0 * options.tolerance;
+  // A residual at round-off of a sheet that moves rigidly with next to no force (a drawn cup
+  // riding on the punch) is tiny against the sheet's characteristic force but not against its
+  // internal forces, which are round-off themselves: the update has vanished, so that is
+  // stagnation too (measured: ESAFORM cups, force holder, 1.3e-5 N against 6 kN).
+  const bool stagnated = sum.update_norm <= 1e-3 * options.tolerance &&
+                         (sum.residual_norm <= 100.0 * options.tolerance ||
+                          sum.residual_abs <= options.tolerance * options.stagnation_force);
   return ((small_update && small_residual) || stagnated) && iteration > 1;
 }
 
@@ -159,6 +165,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     if (chord) {
       chord = false;
       sum.residual_norm = relative(r.norm(), std::max(eval_scale, options.force_floor));
+      sum.residual_abs = r.norm();
       solve(/*approximate=*/true);
       const double slope = r.dot(dx);
       bool ok =
@@ -201,6 +208,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       return sum;
     }
     sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
+    sum.residual_abs = r.norm();
     const bool krylov =
         used_theta > 0.0 && held && options.krylov_max_iterations > 0 && krylov_solve();
     bool factored = false;
@@ -273,6 +281,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       if (used_theta > 0.0) {
         scale = evaluate(0.0);
         sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
+        sum.residual_abs = r.norm();
         held = factorize();
         if (!held) {
           sum.message = "secant matrix is not positive definite";

@@ -104,6 +104,10 @@ struct NewtonOptions {
   // nothing left to deform) has internal forces at round-off, and round-off over round-off never
   // converges (measured: a drawn cup stalled at |dx|/|x| = 3e-17, |r|/|f| = 0.999).
   double force_floor = 0.0;
+  // The sheet's characteristic force [N] (sigma_y(0) h0 R), for the round-off stagnation test
+  // (newton_converged): a stalled iterate whose residual is below `tolerance` times this force is
+  // converged whatever the internal forces. 0: no such test.
+  double stagnation_force = 0.0;
 
   // False with the reason if an option is out of its range.
   bool IsValid(std::string* why) const;
@@ -119,6 +123,7 @@ struct NewtonSummary {
   int krylov_iterations = 0;  // CG iterations, of successful and failed Krylov solves
   double update_norm = 0.0;
   double residual_norm = 0.0;
+  double residual_abs = 0.0;  // ||r|| [N] of the same iterate
   // Largest LinearSolver::condition_estimate() of the Newton matrices factorised in this solve.
   double condition_estimate = 1.0;
   // Work: time in evaluate / evaluate_residual / potential / refresh, time in factorisations,
@@ -133,8 +138,9 @@ struct NewtonSummary {
 // tolerance (Picard: update only), or round-off stagnation: the update has vanished (1e-3 of the
 // tolerance) while the residual, limited by the conditioning of rigid zones, sits just above the
 // tolerance (up to 100x): the iterate is as good as double precision allows (measured: ex3
-// sticking stalled at |dx|/|x| = 3e-17, |r|/|f| = 1.08e-6 with tolerance 1e-6). Never after the
-// first iteration.
+// sticking stalled at |dx|/|x| = 3e-17, |r|/|f| = 1.08e-6 with tolerance 1e-6), or below the
+// tolerance times NewtonOptions::stagnation_force in absolute terms. Never after the first
+// iteration.
 bool newton_converged(const NewtonOptions& options, const NewtonSummary& sum, int iteration);
 
 // x: start (prescribed values already set); on return, the last iterate.

@@ -58,8 +58,8 @@ class AxisymStepper {
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
     nl_.verbose = options.verbose;
-    nl_.force_floor = newton_force_floor(driver, model_.hardening().curve_stress(0.0),
-                                         scene.blank.thickness_mm, scene.blank.radius_mm);
+    set_newton_force_scales(driver, model_.hardening().curve_stress(0.0), scene.blank.thickness_mm,
+                            scene.blank.radius_mm, &nl_);
   }
 
   // --- the Stepper interface of step_driver.h

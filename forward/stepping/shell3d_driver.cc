@@ -89,8 +89,8 @@ class Shell3dStepper {
     nl_.tolerance = scene.numerics.tolerance;
     nl_.max_iterations = scene.numerics.max_iterations;
     nl_.verbose = options.verbose;
-    nl_.force_floor = newton_force_floor(driver, model_.hardening().curve_stress(0.0),
-                                         scene.blank.thickness_mm, scene.blank.radius_mm);
+    set_newton_force_scales(driver, model_.hardening().curve_stress(0.0), scene.blank.thickness_mm,
+                            scene.blank.radius_mm, &nl_);
     // Assembly costs more than a potential here: the full Newton step is evaluated completely.
     // Chord steps: measured on ex4a (n = 4, punch friction 0.2, 10 mm, speed setting):
     // factorisations 572 -> 280 with the same answers; the Newton tail of the regularised

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "solver/newton.h"
+
 namespace vs {
 
 struct StepDriverOptions {
@@ -71,11 +73,15 @@ struct StepDriverOptions {
   bool IsValid(std::string* why) const;
 };
 
-// NewtonOptions::force_floor [N] for a sheet with initial yield stress sigma_y0, thickness h0
-// and blank radius R: options.residual_force_floor sigma_y0 h0 R.
-inline double newton_force_floor(const StepDriverOptions& options, double sigma_y0_MPa,
-                                 double h0_mm, double radius_mm) {
-  return options.residual_force_floor * sigma_y0_MPa * h0_mm * radius_mm;
+// The Newton solver's force scales for a sheet with initial yield stress sigma_y0, thickness h0
+// and blank radius R: the residual's floor NewtonOptions::force_floor =
+// options.residual_force_floor sigma_y0 h0 R, and the round-off stagnation test's
+// NewtonOptions::stagnation_force = sigma_y0 h0 R.
+inline void set_newton_force_scales(const StepDriverOptions& options, double sigma_y0_MPa,
+                                    double h0_mm, double radius_mm, NewtonOptions* newton) {
+  const double characteristic = sigma_y0_MPa * h0_mm * radius_mm;
+  newton->force_floor = options.residual_force_floor * characteristic;
+  newton->stagnation_force = characteristic;
 }
 
 // Why a thickness h outside the limits of `options` (relative to h0) stops a run: "the mesh is
