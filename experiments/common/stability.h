@@ -87,16 +87,8 @@ inline StabilityRow evaluate_stability(const std::string& source_dir, const Stab
     row.iter_per_step = static_cast<double>(iters) / row.steps;
     row.min_thickness_ratio = hmin / h0;
   }
-  for (const vs::Profile& p : r.profiles) {
-    for (const vs::StepRecord& s : r.steps) {
-      if (std::abs(s.punch_travel_mm - p.punch_travel_mm) <= 1e-9 * (1.0 + p.punch_travel_mm)) {
-        const double e = vs::free_wall_equilibrium_error(p, s.punch_force_N);
-        if (e == e)
-          row.equilibrium = row.equilibrium == row.equilibrium ? std::max(row.equilibrium, e) : e;
-        break;
-      }
-    }
-  }
+  row.equilibrium = vs::free_wall_equilibrium(r).error;
+
   // Verdict: a completed run must pass every check; a stopped run must say why.
   if (!row.finite) row.problems.push_back("non-finite values in the step records");
   if (row.steps > 0 && !(row.min_thickness_ratio > 0.0)) row.problems.push_back("thickness <= 0");

@@ -74,6 +74,24 @@ double free_wall_equilibrium_error(const Profile& p, double punch_force_N) {
   return worst;
 }
 
+FreeWallEquilibrium free_wall_equilibrium(const RunResult& result) {
+  FreeWallEquilibrium worst;
+  for (const Profile& p : result.profiles) {
+    for (const StepRecord& s : result.steps) {
+      if (std::abs(s.punch_travel_mm - p.punch_travel_mm) > 1e-9 * (1.0 + p.punch_travel_mm)) {
+        continue;
+      }
+      const double e = free_wall_equilibrium_error(p, s.punch_force_N);
+      if (e > worst.error || (std::isnan(worst.error) && !std::isnan(e))) {
+        worst.error = e;
+        worst.travel_mm = p.punch_travel_mm;
+      }
+      break;
+    }
+  }
+  return worst;
+}
+
 std::vector<std::string> suspect_result_warnings(const RunResult& result) {
   std::vector<std::string> warnings;
   const LoadCurveNoise noise = load_curve_noise(result.steps);
@@ -84,22 +102,8 @@ std::vector<std::string> suspect_result_warnings(const RunResult& result) {
         "trustworthy (check the thickness against the tool radii and the mesh)",
         noise.reversals, noise.increments, noise.rms_second_difference));
   }
-  // The free wall's equilibrium at the output travels (a profile and the step written with it).
-  double worst = 0.0, worst_travel = 0.0;
-  for (const Profile& p : result.profiles) {
-    for (const StepRecord& s : result.steps) {
-      if (std::abs(s.punch_travel_mm - p.punch_travel_mm) > 1e-9 * (1.0 + p.punch_travel_mm)) {
-        continue;
-      }
-      const double e = free_wall_equilibrium_error(p, s.punch_force_N);
-      if (e > worst) {
-        worst = e;
-        worst_travel = p.punch_travel_mm;
-      }
-      break;
-    }
-  }
-  if (worst > kFreeWallEquilibriumWarning) {
+  const FreeWallEquilibrium eq = free_wall_equilibrium(result);
+  if (eq.error > kFreeWallEquilibriumWarning) {
     warnings.push_back(fmt::format(
         "at punch travel {:.4g} mm the stress resultants carry a vertical force through the free "
         "wall that differs from the punch force by {:.2g} % (a converged step balances to the "
@@ -107,7 +111,7 @@ std::vector<std::string> suspect_result_warnings(const RunResult& result) {
         "update's weakly damped stiff mode of a very thin sheet; numerics.implicit_theta = 1, "
         "numerics.implicit_solves = 3 or a smaller numerics.max_travel_increment_per_length "
         "remove it",
-        worst_travel, 100.0 * worst));
+        eq.travel_mm, 100.0 * eq.error));
   }
   return warnings;
 }

@@ -4,6 +4,7 @@
 // the free wall (axisymmetric). The warnings go to run.json and stderr with the run's own.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,14 @@ LoadCurveNoise load_curve_noise(const std::vector<StepRecord>& steps);
 // stretch. A converged solve in the configuration it is written in balances to the solver
 // tolerance (experiments/03_stability: <= 0.33 % on every bundled and extreme case but one).
 double free_wall_equilibrium_error(const Profile& p, double punch_force_N);
+
+// The largest free_wall_equilibrium_error over the run's profiles, each with the step written at
+// its travel, and that travel; NaN (and 0) when no profile is measured.
+struct FreeWallEquilibrium {
+  double error = std::numeric_limits<double>::quiet_NaN();
+  double travel_mm = 0.0;
+};
+FreeWallEquilibrium free_wall_equilibrium(const RunResult& result);
 
 // The warning threshold of free_wall_equilibrium_error (experiments/03_stability's GARBAGE
 // verdict). Above it the resultants and the punch force disagree, as in the implicit update's

@@ -74,6 +74,11 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
   const bool newton_allowed = options.kind == SolverKind::kNewton;
   const bool chords = newton_allowed && options.chord_start > 0.0;
 
+  // The residual's norms for the stopping test: relative to max(scale, force floor), and absolute.
+  auto record_residual = [&](double scale) {
+    sum.residual_abs = r.norm();
+    sum.residual_norm = relative(sum.residual_abs, std::max(scale, options.force_floor));
+  };
   auto evaluate = [&](double theta) {
     const auto t0 = Clock::now();
     const double scale = problem.evaluate(*x, theta, &r, &p0);
@@ -164,8 +169,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
     if (newton_allowed && it == picard_before_newton + 1) theta = initial_theta;
     if (chord) {
       chord = false;
-      sum.residual_norm = relative(r.norm(), std::max(eval_scale, options.force_floor));
-      sum.residual_abs = r.norm();
+      record_residual(eval_scale);
       solve(/*approximate=*/true);
       const double slope = r.dot(dx);
       bool ok =
@@ -207,8 +211,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       sum.message = "residual is not finite";
       return sum;
     }
-    sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
-    sum.residual_abs = r.norm();
+    record_residual(scale);
     const bool krylov =
         used_theta > 0.0 && held && options.krylov_max_iterations > 0 && krylov_solve();
     bool factored = false;
@@ -280,8 +283,7 @@ NewtonSummary solve_newton(NewtonProblem& problem, const NewtonOptions& options,
       // Direct iteration: always SPD and monotone in the potential (Kacanov).
       if (used_theta > 0.0) {
         scale = evaluate(0.0);
-        sum.residual_norm = relative(r.norm(), std::max(scale, options.force_floor));
-        sum.residual_abs = r.norm();
+        record_residual(scale);
         held = factorize();
         if (!held) {
           sum.message = "secant matrix is not positive definite";

@@ -65,12 +65,6 @@ TEST(EsaformCup, FrictionOnTheGapHolderPressureLocksTheBenchmarkGap) {
   EXPECT_LT(thinnest, 0.5 * locked.blank.thickness_mm);
 }
 
-// A node that becomes squeezed between punch and die at a contact event (a step ~1/10 of the
-// grid's) used to have its 0.9 % thickness overshoot ironed out within that short step: ~100x the
-// flow rate, a penalty pressure that carried the punch load, pulled the sheet off the punch nose
-// and released seven nodes at once; the run stopped at 37.02 mm. The overshoot is now removed over
-// at least a grid step (AxisymModel::add_squeeze). Checked: the run passes that point, the punch
-// force does not collapse there, and no node overlaps a tool by more than 2 % of the thickness.
 // Past the full draw the cup rides on the punch with next to no force: its internal forces are
 // round-off, and the Newton residual relative to them never falls (|r| / |f| ~ 0.5 at |r| ~ 1e-5
 // N). Measured at the implicit default: this run stopped at 43.75 mm after 8 cut-backs until the
@@ -91,6 +85,12 @@ TEST(EsaformCup, ForceHolderCupRunsToTheEndOfTheTravel) {
   EXPECT_EQ(result.total_cutbacks, 0);
 }
 
+// A node that becomes squeezed between punch and die at a contact event (a step ~1/10 of the
+// grid's) used to have its 0.9 % thickness overshoot ironed out within that short step: ~100x the
+// flow rate, a penalty pressure that carried the punch load, pulled the sheet off the punch nose
+// and released seven nodes at once; the run stopped at 37.02 mm. The overshoot is now removed over
+// at least a grid step (AxisymModel::add_squeeze). Checked: the run passes that point, the punch
+// force does not collapse there, and no node overlaps a tool by more than 2 % of the thickness.
 TEST(EsaformCup, SqueezeAtAContactEventDoesNotReleaseThePunch) {
   const vs::Scene scene = vsx::make_cup_scene(VS_SOURCE_DIR,
                                               {{"material.hardening.K_MPa", "498.8"},
