@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -86,11 +87,12 @@ void add_scene_args(CLI::App& command, SceneArgs& args) {
       ->allow_extra_args(false);
 }
 
-// The first line of RunResult::built without its "model: " label.
-std::string model_line(const vs::RunResult& result) {
-  if (result.built.empty()) return "-";
-  const std::string& line = result.built.front();
-  return line.rfind("model: ", 0) == 0 ? line.substr(7) : line;
+// The line of RunResult::built with this label, without it ("-" if there is none).
+std::string built_line(const vs::RunResult& result, std::string_view label) {
+  for (const std::string& line : result.built) {
+    if (line.rfind(label, 0) == 0) return line.substr(label.size());
+  }
+  return "-";
 }
 
 int run_command(const RunArgs& args) {
@@ -126,7 +128,8 @@ int run_command(const RunArgs& args) {
   for (const std::string& w : summary.warnings) std::cerr << "warning: " << w << '\n';
   const vs::RunTimings& t = result.timings;
   std::cout << vs::summary_report(summary) << '\n'
-            << fmt::format("model             {}\n", model_line(result))
+            << fmt::format("model             {}\n", built_line(result, "model: "))
+            << fmt::format("update            {}\n", built_line(result, "time integration: "))
             << fmt::format(
                    "time split        assembly {:.2f} s, linear solves {:.2f} s, contact {:.2f} s "
                    "of {:.2f} s\n",

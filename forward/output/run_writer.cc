@@ -59,13 +59,22 @@ std::string unique_strains_name(const FolderWriter& out, const Profile& p) {
   return name;
 }
 
+// The scene with the values the run chose itself (numerics.implicit_solves by the model's size),
+// so that scene.toml and run.json hold the scene as run.
+Scene scene_as_run(const Scene& scene, const RunResult& result) {
+  Scene as_run = scene;
+  if (result.implicit_solves > 0) as_run.numerics.implicit_solves = result.implicit_solves;
+  return as_run;
+}
+
 }  // namespace
 
 std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& result,
                                           const std::string& directory,
                                           const RunWriterOptions& options) {
   FolderWriter out(directory);
-  out.text("scene.toml", scene_toml(scene));
+  const Scene as_run = scene_as_run(scene, result);
+  out.text("scene.toml", scene_toml(as_run));
   out.text("load_travel.csv", load_travel_csv(result.steps));
   out.text("thinnest_point.csv", thinnest_point_csv(result.steps, scene.blank.thickness_mm));
   const FormingLimitCurve flc = forming_limit_curve(scene);
@@ -115,7 +124,7 @@ std::vector<std::string> write_run_folder(const Scene& scene, const RunResult& r
   std::vector<std::string> files = out.written();
   files.push_back("run.json");
   // Invalid UTF-8 in a title must not cost the manifest: replace it instead of throwing.
-  const std::string manifest = run_manifest(scene, result, files)
+  const std::string manifest = run_manifest(as_run, result, files)
                                    .dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
   out.text("run.json", manifest + '\n');
   return out.written();

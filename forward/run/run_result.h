@@ -121,6 +121,9 @@ struct RunResult {
   // numerics.implicit_solves), summed over every step tried (the last contact round of
   // each solve). total_iterations counts only the last solve of each accepted step.
   std::vector<int> implicit_solve_iterations;
+  // The velocity solves per implicit step as run (numerics.implicit_solves, resolved where the
+  // scene leaves it to the model's size); 0 for a run that did not get to build its model.
+  int implicit_solves = 0;
   int total_cutbacks = 0;
   // Solves whose Newton iteration with friction consistent with the current normal reactions did
   // not converge and that were redone with lagged reactions (see simulate.cc).

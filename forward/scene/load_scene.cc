@@ -46,7 +46,9 @@ void check_geometry_keys(const toml::table& table, const Scene& scene, const std
 // do not end at contact events (contact_events = false: every node of a 3D mesh touches at its
 // own instant, and with events its outputs jumped under 1e-5 changes of friction; experiments/06,
 // "The implicit update as the 3D default"). The step cap relative to the element length follows the
-// update: 0.25 implicit (accuracy), 0.025 heun / euler (the explicit update's stability).
+// update: 0.25 implicit (accuracy), 0.025 heun / euler (the explicit update's stability). A
+// shell3d scene's velocity solves per step follow the model's size (implicit_solves_for in
+// stepping/step_driver.h: one from kOneSolveMinUnknowns unknowns).
 void apply_geometry_defaults(const toml::table& table, Scene* scene) {
   NumericsSpec& nu = scene->numerics;
   if (!table.at_path("numerics.time_integration")) nu.time_integration = TimeIntegration::kImplicit;
@@ -56,6 +58,9 @@ void apply_geometry_defaults(const toml::table& table, Scene* scene) {
     nu.start_refinement = implicit_3d ? kShell3dImplicitStartRefinement : 0;
   }
   if (!table.at_path("numerics.contact_events")) nu.contact_events = !implicit_3d;
+  if (!table.at_path("numerics.implicit_solves") && implicit_3d) {
+    nu.implicit_solves = kImplicitSolvesBySize;
+  }
   if (!table.at_path("numerics.max_travel_increment_per_length")) {
     nu.max_travel_increment_per_length = nu.time_integration == TimeIntegration::kImplicit
                                              ? kImplicitTravelIncrementPerLength

@@ -205,6 +205,9 @@ enum class ShellElementRule {
 inline constexpr double kImplicitTravelIncrementPerLength = 0.25;
 // The default start refinement of a shell3d scene with the implicit update (NumericsSpec).
 inline constexpr int kShell3dImplicitStartRefinement = 3;
+// NumericsSpec::implicit_solves of a shell3d scene that leaves the count to the model's size
+// (not a value a scene file can give; stepping/step_driver.h, implicit_solves_for).
+inline constexpr int kImplicitSolvesBySize = 0;
 
 struct NumericsSpec {
   int thickness_points = 5;  // Simpson points through the thickness: 3, 5, 7 or 9
@@ -221,6 +224,8 @@ struct NumericsSpec {
   // implicit_theta, second order; 1: the configuration moved with the start velocity and the one
   // solve's velocity carried into the next step (first order in the geometry, a stiff mode damped
   // only by |z|^2 = theta a / (1 + theta a), a = its rate times the step; step_driver.h).
+  // kImplicitSolvesBySize: chosen by the model's size when the run builds it (a shell3d scene
+  // file without the key; implicit_solves_for in stepping/step_driver.h).
   int implicit_solves = 2;
   // Implicit update with two or more solves: the solve in which new contacts enter (not those of
   // sticking tools, which always enter in the first; step_driver.h).

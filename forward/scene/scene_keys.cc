@@ -369,7 +369,8 @@ std::vector<KeySpec> build_keys() {
              "heun: explicit predictor-corrector (two solves per step, second order, stable only "
              "below about 0.025 element lengths per step); euler: the paper's update with the "
              "start-of-step velocity (first order); implicit: the velocity solved in the "
-             "end-of-step configuration (two solves per step by default, implicit_solves; with "
+             "end-of-step configuration (two solves per step by default, one on 3D meshes from "
+             "30 000 unknowns: implicit_solves; with "
              "the configuration's dependence on the velocity), stable at steps set by accuracy: "
              "with "
              "max_travel_increment_per_length = 0.25 it runs ex1 about 8x faster than heun at "
@@ -382,18 +383,25 @@ std::vector<KeySpec> build_keys() {
            "Implicit update x_{n+1} = x_n + dt ((1 - theta) v_n + theta v_{n+1}): 0.5 trapezoidal "
            "(second order), 1 backward Euler (first order; damps the stiffest modes fully)."));
   add(make(
-      nu, "implicit_solves", kInt, int_field<&numerics, &NumericsSpec::implicit_solves>(), "",
-      closed(1, 3),
-      "Implicit update: velocity solves per step, each in the configuration moved with the "
-      "previous solve's velocity. 2: the update of implicit_theta (second order). 1: a 3D "
-      "speed setting, one solve in the configuration moved with the start velocity (first "
-      "order; a stiff mode is damped only weakly at large steps). Measured against the same "
-      "mesh at 1/4-1/8 of the step with contact events: ex4a quarter disc, 16 divisions, "
-      "friction 0.2, to 30 mm: 1.5x faster (18.5 s instead of 28 s) and as close (force within "
-      "0.21 % instead of 0.51 %, thickness strain 0.0106 instead of 0.0108); 8 divisions: "
-      "thickness strain 0.0065 instead of 0.0035; ex2 in 3D: force 0.3-0.6 % instead of "
-      "0.02-0.07 % off, 1.8 % where the force drops at 40 mm (experiments/05_shell3d). 3: "
-      "one more solve (the axisymmetric ex1: force within 0.005 % of 2)."));
+          nu, "implicit_solves", kInt, int_field<&numerics, &NumericsSpec::implicit_solves>(), "",
+          closed(1, 3),
+          "Implicit update: velocity solves per step, each in the configuration moved with the "
+          "previous solve's velocity. 2: the update of implicit_theta (second order). 1: one "
+          "solve in the configuration moved with the start velocity (first order, its error "
+          "proportional to the step; a stiff mode is damped only weakly at large steps), about "
+          "1.5x faster in 3D. 3: one more solve (the axisymmetric ex1: force within 0.005 % of 2). "
+          "Default: 2, except shell3d scenes with the implicit update, where it follows the "
+          "model's size: 2 below 30 000 unknowns, 1 from there (the run prints which). Measured "
+          "on ex4a (quarter disc, friction 0.2, to 30 mm) against a mesh-converged axisymmetric "
+          "twin (transverse_shear_scale 0.1 on both sides), largest thickness-strain difference at "
+          "30 mm, one solve against two: 8 divisions (4 085 unknowns) 0.0068 / 0.0034, 16 "
+          "(15 845) 0.0052 / 0.0021, 32 (62 405) 0.0030 / 0.0015; at the default penalty 32 "
+          "divisions take 136-139 s instead of 215-217 s. On a draw one solve is less accurate "
+          "(ex2 in 3D, 4 divisions: force 0.3-0.6 % instead of 0.02-0.07 % off, 1.8 % where the "
+          "force drops at 40 mm; experiments/05_shell3d)."))
+      .default_text = [] {
+    return std::string("(2; shell3d with implicit: 1 from 30 000 unknowns, else 2)");
+  };
   add(choice(nu, "contact_entry", enum_field<&numerics, &NumericsSpec::contact_entry>(),
              {"first_solve", "last_solve"},
              "Implicit update with two or more solves: where a node that reaches a tool during a "

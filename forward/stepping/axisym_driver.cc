@@ -64,6 +64,7 @@ class AxisymStepper {
 
   // --- the Stepper interface of step_driver.h
   int num_nodes() const { return model_.num_nodes(); }
+  int num_unknowns() const { return model_.num_dofs(); }
   bool contact_eligible(int node) const {
     return !(node == model_.num_nodes() - 1 && scene_.blank.edge != EdgeCondition::kFree);
   }

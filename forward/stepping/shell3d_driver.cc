@@ -119,6 +119,7 @@ class Shell3dStepper {
 
   // --- the Stepper interface of step_driver.h
   int num_nodes() const { return model_.num_nodes(); }
+  int num_unknowns() const { return model_.num_dofs(); }
   bool contact_eligible(int node) const { return model_.contact_eligible(node); }
   bool in_contact(const FormingState& s, int node) const { return s.contact[node].tool >= 0; }
   // The spacing of the travel grid is the smaller of the absolute cap and the cap relative to

@@ -13,7 +13,8 @@
 // stepping/shell3d_driver.cc): it owns its model, state and contact search and provides
 //   using State (with double time_s), using Solved (with State state, double punch_force,
 //     max_rate, std::vector<std::vector<double>> point_rates, NewtonSummary summary);
-//   int num_nodes(); bool contact_eligible(int node); bool in_contact(const State&, int node);
+//   int num_nodes(); int num_unknowns(); bool contact_eligible(int node);
+//   bool in_contact(const State&, int node);
 //   double shortest_element_mm();
 //   void set_grid_increment(double mm);                       (once, before the run)
 //   State initial_state(); void place_tools(State&);
@@ -41,7 +42,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
@@ -418,8 +421,46 @@ RunResult StepDriver<Stepper>::run() {
   return result;
 }
 
+// The implicit update's velocity solves per step when a scene leaves them to the model's size
+// (NumericsSpec::implicit_solves = kImplicitSolvesBySize, the default of a shell3d scene file):
+// two (second order in the geometry) below kOneSolveMinUnknowns unknowns, one from there. Two
+// solves cost about 1.5x one; one solve is first order, with an error proportional to the step,
+// which the default cap sets at a quarter of the element length: largest on the coarse meshes,
+// where a run takes seconds, smallest on the fine ones, where it takes minutes. Measured on ex4a
+// (friction 0.2, to 30 mm, 2 threads; against the 120-element axisymmetric twin with
+// numerics.transverse_shear_scale = 0.1 on both sides, where the twin is mesh-converged), largest
+// |d eps_t| at 30 mm, one solve against two: 8 divisions (4 085 unknowns) 0.0068 / 0.0034,
+// 16 (15 845) 0.0052 / 0.0021, 32 (62 405) 0.0030 / 0.0015; and at the default penalty, 32
+// divisions 136-139 s against 215-217 s (experiments/05_shell3d, "One solve per step from
+// 30 000 unknowns").
+inline constexpr int kOneSolveMinUnknowns = 30000;
+inline int implicit_solves_for(const NumericsSpec& numerics, int unknowns) {
+  if (numerics.implicit_solves != kImplicitSolvesBySize) return numerics.implicit_solves;
+  return unknowns >= kOneSolveMinUnknowns ? 1 : 2;
+}
+
+// RunResult::built's line for the geometry update of `numerics` (its implicit_solves resolved;
+// `by_size`: chosen by implicit_solves_for).
+inline std::string time_integration_line(const NumericsSpec& numerics, bool by_size) {
+  switch (numerics.time_integration) {
+    case TimeIntegration::kHeun:
+      return "time integration: Heun (explicit trapezoidal, two velocity solves per step)";
+    case TimeIntegration::kEuler:
+      return "time integration: Euler (the start-of-step velocity, one velocity solve per step)";
+    case TimeIntegration::kImplicit:
+      break;
+  }
+  return fmt::format(
+      "time integration: implicit (theta {:g}), {} velocity solve{} per step{}",
+      numerics.implicit_theta, numerics.implicit_solves, numerics.implicit_solves == 1 ? "" : "s",
+      by_size ? fmt::format(" (by the model's size: 2 below {} unknowns, 1 from there)",
+                            kOneSolveMinUnknowns)
+              : "");
+}
+
 // A run of one geometry: checks the step driver's options (RunOptions::driver; invalid ones fail
-// the run at once with the reason), builds the stepper and drives it.
+// the run at once with the reason), builds the stepper, resolves the velocity solves per step
+// that the scene leaves to the model's size, and drives it.
 template <class Stepper>
 RunResult run_stepper(const Scene& scene, const RunOptions& options) {
   if (std::string why; !options.driver.IsValid(&why)) {
@@ -429,16 +470,25 @@ RunResult run_stepper(const Scene& scene, const RunOptions& options) {
     return failed;
   }
   // A scene file's range check does not reach a scene built in code.
-  if (scene.numerics.implicit_solves < 1 || scene.numerics.implicit_solves > 3) {
+  const bool by_size = scene.numerics.implicit_solves == kImplicitSolvesBySize;
+  if (!by_size && (scene.numerics.implicit_solves < 1 || scene.numerics.implicit_solves > 3)) {
     RunResult failed;
     failed.termination = Termination::kFailed;
-    failed.message = fmt::format("numerics.implicit_solves = {} is out of range [1, 3]",
-                                 scene.numerics.implicit_solves);
+    failed.message = fmt::format(
+        "numerics.implicit_solves = {} is out of range [1, 3] (or {}: by the model's size)",
+        scene.numerics.implicit_solves, kImplicitSolvesBySize);
     return failed;
   }
   Stepper stepper(scene, options, options.driver);
-  StepDriver<Stepper> driver(scene, options, options.driver, stepper);
-  return driver.run();
+  Scene resolved = scene;
+  resolved.numerics.implicit_solves = implicit_solves_for(scene.numerics, stepper.num_unknowns());
+  StepDriver<Stepper> driver(resolved, options, options.driver, stepper);
+  RunResult result = driver.run();
+  result.implicit_solves = resolved.numerics.implicit_solves;
+  // After the model's own line (the stepper's first).
+  const auto at = result.built.begin() + std::min<std::ptrdiff_t>(1, std::ssize(result.built));
+  result.built.insert(at, time_integration_line(resolved.numerics, by_size));
+  return result;
 }
 
 }  // namespace vs

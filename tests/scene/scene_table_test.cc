@@ -70,13 +70,19 @@ TEST(SceneTable, NumericsDefaultsFollowTheGeometryAndTheUpdate) {
   EXPECT_FALSE(shell.numerics.contact_events);
   EXPECT_EQ(axi.numerics.start_refinement, 0);
   EXPECT_TRUE(axi.numerics.contact_events);
+  EXPECT_EQ(shell.numerics.implicit_solves, kImplicitSolvesBySize);
+  EXPECT_EQ(axi.numerics.implicit_solves, 2);
   set_scene_value_from_text(table3d, "numerics.time_integration", "heun");
   const Scene shell_heun = scene_from_table(table3d, ex4a, "");
   EXPECT_EQ(shell_heun.numerics.max_travel_increment_per_length, 0.025);
   EXPECT_EQ(shell_heun.numerics.start_refinement, 0);
   EXPECT_TRUE(shell_heun.numerics.contact_events);
+  EXPECT_EQ(shell_heun.numerics.implicit_solves, 2);
   set_scene_value_from_text(table3d, "numerics.start_refinement", "2");
   EXPECT_EQ(scene_from_table(table3d, ex4a, "").numerics.start_refinement, 2);
+  set_scene_value_from_text(table3d, "numerics.time_integration", "implicit");
+  set_scene_value_from_text(table3d, "numerics.implicit_solves", "2");
+  EXPECT_EQ(scene_from_table(table3d, ex4a, "").numerics.implicit_solves, 2);
   // A number read from the table (the calibration's start values) cannot name such a default.
   EXPECT_NE(error_of([] {
               get_scene_number(minimal_table(), "numerics.max_travel_increment_per_length");

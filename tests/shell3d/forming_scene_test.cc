@@ -1,17 +1,22 @@
 // Scene integration of the 3D forming solver: geometry-specific keys, bundled scenes, dispatch.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 #include "mesh/forming_mesh.h"
 #include "model/forming_model.h"
+#include "output/run_writer.h"
 #include "run/simulate.h"
 #include "scene/load_scene.h"
 #include "stepping/shell3d_driver.h"
+#include "stepping/step_driver.h"
 
 namespace vs::shell3d {
 namespace {
@@ -200,6 +205,52 @@ TEST(FormingScene, RadialDivisionsRefineTheRingOfACircle) {
   EXPECT_NE(axi.find("key 'blank.radial_divisions' is only used by geometry = \"shell3d\""),
             std::string::npos)
       << axi;
+}
+
+// numerics.implicit_solves left to the model's size (the default of a shell3d scene with the
+// implicit update): two velocity solves per step below kOneSolveMinUnknowns unknowns, one from
+// there. The run says which (RunResult::built), and its scene.toml holds the count as run, so
+// that it runs again the same. ex4a has 4 085 unknowns at 8 divisions, 29 705 at 22 and 32 435
+// at 23.
+TEST(FormingScene, VelocitySolvesPerStepFollowTheModelSize) {
+  NumericsSpec by_size;
+  by_size.implicit_solves = kImplicitSolvesBySize;
+  EXPECT_EQ(implicit_solves_for(by_size, kOneSolveMinUnknowns - 1), 2);
+  EXPECT_EQ(implicit_solves_for(by_size, kOneSolveMinUnknowns), 1);
+  NumericsSpec given;
+  for (int n : {1, 2, 3}) {
+    given.implicit_solves = n;
+    EXPECT_EQ(implicit_solves_for(given, 10), n);
+    EXPECT_EQ(implicit_solves_for(given, 10 * kOneSolveMinUnknowns), n);
+  }
+
+  Scene scene = load_scene(scene_path("ex4a_quarter_disc_sticking.toml"));
+  ASSERT_EQ(scene.numerics.implicit_solves, kImplicitSolvesBySize);
+  scene.process.punch_travel_mm = 0.02;
+  scene.process.output_travels_mm = {0.02};
+  scene.output.plots = false;
+  for (const auto& [divisions, solves] : {std::pair{8, 2}, std::pair{23, 1}}) {
+    scene.blank.divisions = divisions;
+    const RunResult r = simulate(scene);
+    ASSERT_TRUE(r.completed()) << r.message;
+    EXPECT_EQ(r.dofs >= kOneSolveMinUnknowns, solves == 1) << r.dofs;
+    EXPECT_EQ(r.implicit_solves, solves);
+    EXPECT_EQ(r.implicit_solve_iterations.size(), static_cast<std::size_t>(solves));
+    const std::string line = fmt::format("{} velocity solve{} per step (by the model's size",
+                                         solves, solves == 1 ? "" : "s");
+    EXPECT_TRUE(std::any_of(r.built.begin(), r.built.end(), [&](const std::string& b) {
+      return b.rfind("time integration: implicit", 0) == 0 && b.find(line) != std::string::npos;
+    })) << line;
+    const auto dir = std::filesystem::temp_directory_path() / "vs_shell3d_scene_tests" /
+                     fmt::format("solves_{}", divisions);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    write_run_folder(scene, r, dir.string());
+    std::stringstream echo;
+    echo << std::ifstream(dir / "scene.toml").rdbuf();
+    EXPECT_NE(echo.str().find(fmt::format("\nimplicit_solves = {}\n", solves)), std::string::npos);
+    EXPECT_EQ(load_scene((dir / "scene.toml").string()).numerics.implicit_solves, solves);
+  }
 }
 
 }  // namespace
