@@ -15,6 +15,7 @@ cases=(
   "ex1_mu010_r60_l2|--case ex1 --friction 0.1 --radial 60 --layers 2"
   "ex1_mu010_r60_l2_t0425|--case ex1 --friction 0.1 --radial 60 --layers 2 --thickness 0.425"
   "ex3_mu007_r54_l4|--case ex3 --friction 0.07 --radial 54 --layers 4 --travel 40"
+  "ex3_mu007_r54_l4_E210|--case ex3 --friction 0.07 --radial 54 --layers 4 --travel 10.2 --E 210000 --max-increment-mm 0.1"
 )
 run() { local name=${1%%|*} opts=${1#*|}; ./run_case.sh "$name" $opts; }
 for c in "${cases[@]}"; do
