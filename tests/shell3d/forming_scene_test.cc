@@ -223,6 +223,14 @@ TEST(FormingScene, VelocitySolvesPerStepFollowTheModelSize) {
     EXPECT_EQ(implicit_solves_for(given, 10), n);
     EXPECT_EQ(implicit_solves_for(given, 10 * kOneSolveMinUnknowns), n);
   }
+  given.implicit_solves = 3;
+  given.time_integration = TimeIntegration::kImplicit;
+  EXPECT_EQ(time_integration_line(given, false),
+            "time integration: implicit (theta 0.5), 3 velocity solves per step");
+  given.time_integration = TimeIntegration::kHeun;
+  EXPECT_EQ(time_integration_line(given, false).rfind("time integration: Heun", 0), 0u);
+  given.time_integration = TimeIntegration::kEuler;
+  EXPECT_EQ(time_integration_line(given, false).rfind("time integration: Euler", 0), 0u);
 
   Scene scene = load_scene(scene_path("ex4a_quarter_disc_sticking.toml"));
   ASSERT_EQ(scene.numerics.implicit_solves, kImplicitSolvesBySize);
