@@ -480,6 +480,7 @@ RunResult run_stepper(const Scene& scene, const RunOptions& options) {
     return failed;
   }
   Stepper stepper(scene, options, options.driver);
+  // The count needs the built model; the stepper itself never reads it, the driver does.
   Scene resolved = scene;
   resolved.numerics.implicit_solves = implicit_solves_for(scene.numerics, stepper.num_unknowns());
   StepDriver<Stepper> driver(resolved, options, options.driver, stepper);
