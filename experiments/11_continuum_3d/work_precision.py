@@ -1,0 +1,180 @@
+#!/usr/bin/env python3
+"""Work against precision for ex4b: every vshell run of results/wp/ against vshell's converged
+reference (results/wp/ref_n48), every CalculiX run against the CalculiX reference
+(results/ex4b_n16_l3_k25e3_mu3), and the ratio of run times at equal accuracy (section 5a).
+
+  work_precision.py RESULTS_DIR [--csv OUT.csv] [--svg OUT.svg]
+
+Each tool is measured against its own converged answer: the two models differ (section 4), so
+"equal accuracy" means equal discretisation error, the error a user buys down with run time.
+Errors over the outputs at 5, 10, 15, 20 mm: the largest |dF| / F, and the largest RMS
+difference of the thickness-strain profiles along x (0 <= r0 <= 50 mm) and the diagonal
+(r0 <= 70.7 mm). Times: results/work_precision_vshell.csv (vshell) and time.txt (CalculiX).
+Python 3 standard library only.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare  # noqa: E402  (load_curve, strain_file, profile, interp)
+
+TRAVELS = (5.0, 10.0, 15.0, 20.0)
+VSHELL_REF = "wp/ref_n48"
+CCX_REF = "ex4b_n16_l3_k25e3_mu3"
+# CalculiX runs of the same problem as the reference (friction mu = 3) that reached 20 mm, with
+# the run whose time.txt is used for the timing on the 2-core AMD EPYC, two threads.
+CCX_RUNS = {"ex4b_n12_l2_k5e4_mu3": "ex4b_n12_l2_k5e4_mu3_t2_zen5",
+            "ex4b_n16_l2_k25e3_mu3_t2_zen5": "ex4b_n16_l2_k25e3_mu3_t2_zen5"}
+
+
+def errors(ref, other):
+    """(max |dF| %, max RMS de3, max |de3|) over TRAVELS, lines x and diagonal."""
+    fx, fy = compare.load_curve(ref)
+    ox, oy = compare.load_curve(other)
+    df = rms_max = abs_max = 0.0
+    for T in TRAVELS:
+        F0, F1 = compare.interp(fx, fy, T), compare.interp(ox, oy, T)
+        df = max(df, abs(100.0 * (F1 - F0) / F0))
+        for line in ("x", "diagonal"):
+            rx, ry = compare.profile(compare.strain_file(ref, T, line))
+            qx, qy = compare.profile(compare.strain_file(other, T, line))
+            rmax = 50.0 * (math.sqrt(2.0) if line == "diagonal" else 1.0)
+            if len(rx) <= len(qx):
+                pts = [(e, compare.interp(qx, qy, r)) for r, e in zip(rx, ry) if r <= rmax + 1e-6]
+            else:
+                pts = [(compare.interp(rx, ry, r), e) for r, e in zip(qx, qy) if r <= rmax + 1e-6]
+            d = [o - e for e, o in pts if not (math.isnan(e) or math.isnan(o))]
+            rms_max = max(rms_max, math.sqrt(sum(x * x for x in d) / len(d)))
+            abs_max = max(abs_max, max(abs(x) for x in d))
+    return df, rms_max, abs_max
+
+
+def ccx_wall(path):
+    with open(path) as f:
+        last = f.read().split("\n")[-2] if f else ""
+    fields = dict(kv.split("=", 1) for kv in last.split() if "=" in kv)
+    return float(fields["wall_s"]), float(fields["cpu_user_s"]), int(fields.get("threads", "1"))
+
+
+def write_svg(rows, path):
+    """Two log-log panels (force error, RMS thickness-strain error against wall time), one
+    polyline per vshell variant (meshes in order), CalculiX runs as squares."""
+    series = {}
+    for r in rows:
+        key = "CalculiX" if r["tool"] == "ccx" else "vshell " + r["run"].split("_", 1)[1]
+        if r["run"].startswith("n16_s2"):
+            key = "vshell 16 div., finer steps"
+        series.setdefault(key, []).append(r)
+    colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"]
+    W, H, m = 440, 330, 55
+    t_lo, t_hi = 0.3, 1000.0
+    panels = [("force_err_pct", "max |dF| / F [%]", 0.1, 10.0),
+              ("rms_de3", "max RMS d eps_t", 0.003, 0.03)]
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * W}" height="{H + 60}" '
+           'font-family="sans-serif" font-size="11">',
+           f'<rect width="{2 * W}" height="{H + 60}" fill="white"/>']
+    for k, (field, label, y_lo, y_hi) in enumerate(panels):
+        x0 = k * W + m
+
+        def X(t):
+            return x0 + (W - m - 15) * math.log(t / t_lo) / math.log(t_hi / t_lo)
+
+        def Y(v):
+            v = min(max(v, y_lo), y_hi)
+            return H - m + 15 - (H - m - 10) * math.log(v / y_lo) / math.log(y_hi / y_lo)
+
+        out.append(f'<rect x="{X(t_lo):.1f}" y="{Y(y_hi):.1f}" width="{X(t_hi) - X(t_lo):.1f}" '
+                   f'height="{Y(y_lo) - Y(y_hi):.1f}" fill="none" stroke="black"/>')
+        for t in (1, 10, 100, 1000):
+            out.append(f'<text x="{X(t):.1f}" y="{Y(y_lo) + 14:.1f}" text-anchor="middle">{t}</text>')
+        for v in ((0.1, 0.3, 1, 3, 10) if field == "force_err_pct" else (0.003, 0.01, 0.03)):
+            out.append(f'<text x="{X(t_lo) - 4:.1f}" y="{Y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
+            out.append(f'<line x1="{X(t_lo):.1f}" x2="{X(t_hi):.1f}" y1="{Y(v):.1f}" y2="{Y(v):.1f}" '
+                       'stroke="#ddd"/>')
+        out.append(f'<text x="{(X(t_lo) + X(t_hi)) / 2:.1f}" y="{Y(y_lo) + 30:.1f}" '
+                   'text-anchor="middle">wall time [s], 2 threads</text>')
+        out.append(f'<text x="{X(t_lo):.1f}" y="{Y(y_hi) - 6:.1f}">{label}</text>')
+        for j, (name, pts) in enumerate(sorted(series.items())):
+            c = "black" if name == "CalculiX" else colours[j % len(colours)]
+            pts = sorted(pts, key=lambda r: r["wall_s"])
+            if name != "CalculiX" and len(pts) > 1:
+                d = " ".join(f"{X(r['wall_s']):.1f},{Y(r[field]):.1f}" for r in pts)
+                out.append(f'<polyline points="{d}" fill="none" stroke="{c}"/>')
+            for r in pts:
+                if name == "CalculiX":
+                    out.append(f'<rect x="{X(r["wall_s"]) - 4:.1f}" y="{Y(r[field]) - 4:.1f}" '
+                               f'width="8" height="8" fill="{c}"/>')
+                else:
+                    out.append(f'<circle cx="{X(r["wall_s"]):.1f}" cy="{Y(r[field]):.1f}" r="2.5" '
+                               f'fill="{c}"/>')
+            if k == 0:
+                out.append(f'<text x="{2 * W - 175}" y="{30 + 14 * j}" fill="{c}">{name}</text>')
+    out.append(f'<text x="{m}" y="{H + 50}">ex4b to 20 mm: each tool against its own converged '
+               'answer (vshell 48 divisions, CalculiX 16 x 16 x 3)</text>')
+    out.append("</svg>")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("results")
+    p.add_argument("--csv", default=None)
+    p.add_argument("--svg", default=None, help="error against wall time, log-log, both errors")
+    a = p.parse_args()
+    res = a.results
+    times = {}
+    with open(os.path.join(res, "work_precision_vshell.csv")) as f:
+        for r in csv.DictReader(f):
+            times[r["label"]] = r  # the last timing of a label wins
+    rows = []
+    vref = os.path.join(res, VSHELL_REF)
+    for label, t in sorted(times.items(), key=lambda kv: (kv[1]["variant"], int(kv[1]["divisions"]))):
+        d = os.path.join(res, "wp", label)
+        if label == os.path.basename(VSHELL_REF) or not os.path.isdir(d):
+            continue
+        df, rms, mx = errors(vref, d)
+        rows.append(dict(tool="vshell", run=label, unknowns=int(t["unknowns"]), steps=int(t["steps"]),
+                         wall_s=float(t["wall_s"]), cpu_s=float(t["cpu_user_s"]), threads=t["threads"],
+                         force_err_pct=df, rms_de3=rms, max_de3=mx))
+    cref = os.path.join(res, CCX_REF)
+    for run, timing in CCX_RUNS.items():
+        tpath = os.path.join(res, timing, "time.txt")
+        if not os.path.exists(tpath):
+            continue
+        wall, cpu, threads = ccx_wall(tpath)
+        df, rms, mx = errors(cref, os.path.join(res, run))
+        rows.append(dict(tool="ccx", run=run, unknowns=0, steps=0, wall_s=wall, cpu_s=cpu,
+                         threads=str(threads), force_err_pct=df, rms_de3=rms, max_de3=mx))
+    print(f"{'tool':6} {'run':24} {'unknowns':>8} {'steps':>5} {'wall s':>7} {'cpu s':>7} "
+          f"{'|dF| %':>7} {'rms de3':>8} {'max de3':>8}")
+    for r in rows:
+        print(f"{r['tool']:6} {r['run']:24} {r['unknowns']:8d} {r['steps']:5d} {r['wall_s']:7.2f} "
+              f"{r['cpu_s']:7.2f} {r['force_err_pct']:7.3f} {r['rms_de3']:8.4f} {r['max_de3']:8.4f}")
+    print("\nAt equal accuracy: the fastest vshell run whose force and RMS thickness-strain errors "
+          "are both at most the CalculiX run's")
+    for c in (r for r in rows if r["tool"] == "ccx"):
+        ok = [r for r in rows if r["tool"] == "vshell" and r["force_err_pct"] <= c["force_err_pct"]
+              and r["rms_de3"] <= c["rms_de3"]]
+        if not ok:
+            print(f"  {c['run']}: no vshell run is as accurate")
+            continue
+        best = min(ok, key=lambda r: r["wall_s"])
+        print(f"  {c['run']} ({c['wall_s']:.0f} s, {c['force_err_pct']:.2f} %, {c['rms_de3']:.4f}): "
+              f"{best['run']} ({best['wall_s']:.2f} s, {best['force_err_pct']:.2f} %, "
+              f"{best['rms_de3']:.4f}): ratio {c['wall_s'] / best['wall_s']:.0f}x in wall time")
+    if a.svg:
+        write_svg(rows, a.svg)
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0]))
+            w.writeheader()
+            for r in rows:
+                w.writerow({k: (f"{v:.6g}" if isinstance(v, float) else v) for k, v in r.items()})
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,81 @@
+#!/bin/bash
+# Work against precision for ex4b (issue 14's CalculiX ratio "at equal accuracy", section 5a):
+# vshell at several meshes and step settings, each timed on the machine's threads, its curves kept
+# in results/wp/<label>/, its time in results/work_precision_vshell.csv; then work_precision.py
+# measures every run against vshell's own converged reference (results/wp/ref_n48) and every
+# CalculiX run against the CalculiX reference, and prints the ratio at equal accuracy.
+#
+#   work_precision.sh                 # the sweep (~5 min) and the table
+#   work_precision.sh --reference     # first the vshell references (48 and 32 divisions, step
+#                                     # converged: ~9 and ~3 min), then the sweep
+#   work_precision.sh --table         # the table only (seconds)
+#   VSHELL=path/to/vshell DIVISIONS="8 12 16" VARIANTS="default s1" work_precision.sh
+#   DIVISIONS=16 VARIANTS="events s3 ref5 theta1" work_precision.sh   # the step study
+#
+# Runs one after another (never two timed runs at once); note the load average in time.csv.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+vshell=${VSHELL:-$root/build/app/vshell}
+scene=$root/data/scenes/ex4b_square_clamped.toml
+wp=$here/results/wp
+times=$here/results/work_precision_vshell.csv
+mkdir -p "$wp"
+[ -f "$times" ] || echo "label,divisions,variant,unknowns,steps,factorisations,wall_s,cpu_user_s,load_1min_start,threads" > "$times"
+
+# variant -> extra --set options
+variant_sets() {
+  case $1 in
+    default) echo "" ;;                                          # the scene's defaults
+    s1) echo "--set numerics.implicit_solves=1" ;;                # one velocity solve per step
+    cap025) echo "--set numerics.max_travel_increment_mm=0.25" ;; # half the travel cap
+    s1_events) echo "--set numerics.implicit_solves=1 --set numerics.contact_events=true" ;;
+    events) echo "--set numerics.contact_events=true" ;;        # (section 5: the step's error)
+    s3) echo "--set numerics.implicit_solves=3" ;;
+    ref5) echo "--set numerics.start_refinement=5" ;;
+    theta1) echo "--set numerics.implicit_theta=1" ;;
+    s2_fine) echo "--set numerics.implicit_solves=2 --set numerics.max_strain_increment=0.005 --set numerics.max_travel_increment_mm=0.125" ;;
+    s2_finer) echo "--set numerics.implicit_solves=2 --set numerics.max_strain_increment=0.0025 --set numerics.max_travel_increment_mm=0.0625" ;;
+    *) echo "unknown variant $1" >&2; exit 2 ;;
+  esac
+}
+
+run_one() {  # label divisions variant
+  local label=$1 n=$2 variant=$3 out tf load wall user
+  out=$(mktemp -d)
+  tf=$(mktemp)
+  load=$(cut -d' ' -f1 /proc/loadavg)
+  # shellcheck disable=SC2046
+  OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} /usr/bin/time -f "%e %U" -o "$tf" "$vshell" run "$scene" \
+    --set blank.divisions="$n" $(variant_sets "$variant") --output "$out/run" > "$out/log" 2>&1 ||
+    { echo "vshell failed for $label: $(tail -2 "$out/log")" >&2; exit 1; }
+  read -r wall user < "$tf"
+  rm -rf "${wp:?}/$label" && mkdir -p "$wp/$label"
+  cp "$out"/run/load_travel.csv "$out"/run/strains_travel_*mm_{x,diagonal}.csv "$wp/$label/"
+  python3 - "$out/run/run.json" "$label" "$n" "$variant" "$wall" "$user" "$load" \
+    "${OMP_NUM_THREADS:-2}" >> "$times" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+label, n, variant, wall, user, load, th = sys.argv[2:]
+print(f"{label},{n},{variant},{d['dofs']},{d['steps']},{d['timings']['factorisations']},{wall},{user},{load},{th}")
+EOF
+  rm -rf "$out" "$tf"
+  echo "$label: ${wall} s wall"
+}
+
+mode=${1:-sweep}
+if [ "$mode" = --reference ]; then
+  run_one ref_n48 48 s2_finer
+  run_one ref_n32 32 s2_finer
+  run_one n16_s2_fine 16 s2_fine    # the step error at 16 divisions
+  run_one n16_s2_finer 16 s2_finer
+fi
+if [ "$mode" != --table ]; then
+  for variant in ${VARIANTS:-default s1 cap025 s1_events}; do
+    for n in ${DIVISIONS:-8 10 12 14 16 20 24}; do
+      run_one "n${n}_${variant}" "$n" "$variant"
+    done
+  done
+fi
+python3 "$here/work_precision.py" "$here/results" --csv "$here/results/work_precision.csv" \
+  --svg "$here/results/work_precision.svg"
