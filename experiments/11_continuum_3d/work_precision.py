@@ -68,6 +68,7 @@ def write_svg(rows, path):
         if r["run"].startswith("n16_s2"):
             key = "vshell 16 div., finer steps"
         series.setdefault(key, []).append(r)
+    series = {k: v for k, v in series.items() if k == "CalculiX" or len(v) > 1}  # no single runs
     colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"]
     W, H, m = 440, 330, 55
     t_lo, t_hi = 0.3, 1000.0

@@ -70,6 +70,7 @@ Gap gap_at_5mm(const std::string& surface, const std::vector<Point>& ref) {
                                    {"numerics.max_travel_increment_per_length", "0.25"},
                                    {"numerics.contact_events", "false"},
                                    {"numerics.start_refinement", "0"},  // as measured in 11
+                                   {"numerics.max_travel_increment_mm", "0.5"},  // (the same)
                                    {"numerics.friction_surface", surface},
                                    {"process.punch_travel_mm", "5"},
                                    {"process.output_travels_mm", "[5.0]"},
