@@ -73,10 +73,10 @@ def write_svg(rows, path):
     W, H, m = 440, 330, 55
     t_lo, t_hi = 0.3, 1000.0
     panels = [("force_err_pct", "max |dF| / F [%]", 0.1, 10.0),
-              ("rms_de3", "max RMS d eps_t", 0.003, 0.03)]
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * W}" height="{H + 60}" '
+              ("rms_de3", "max RMS d eps_t", 0.002, 0.03)]
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * W}" height="{H + 85}" '
            'font-family="sans-serif" font-size="11">',
-           f'<rect width="{2 * W}" height="{H + 60}" fill="white"/>']
+           f'<rect width="{2 * W}" height="{H + 85}" fill="white"/>']
     for k, (field, label, y_lo, y_hi) in enumerate(panels):
         x0 = k * W + m
 
@@ -91,7 +91,7 @@ def write_svg(rows, path):
                    f'height="{Y(y_lo) - Y(y_hi):.1f}" fill="none" stroke="black"/>')
         for t in (1, 10, 100, 1000):
             out.append(f'<text x="{X(t):.1f}" y="{Y(y_lo) + 14:.1f}" text-anchor="middle">{t}</text>')
-        for v in ((0.1, 0.3, 1, 3, 10) if field == "force_err_pct" else (0.003, 0.01, 0.03)):
+        for v in ((0.1, 0.3, 1, 3, 10) if field == "force_err_pct" else (0.002, 0.005, 0.01, 0.03)):
             out.append(f'<text x="{X(t_lo) - 4:.1f}" y="{Y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
             out.append(f'<line x1="{X(t_lo):.1f}" x2="{X(t_hi):.1f}" y1="{Y(v):.1f}" y2="{Y(v):.1f}" '
                        'stroke="#ddd"/>')
@@ -112,8 +112,9 @@ def write_svg(rows, path):
                     out.append(f'<circle cx="{X(r["wall_s"]):.1f}" cy="{Y(r[field]):.1f}" r="2.5" '
                                f'fill="{c}"/>')
             if k == 0:
-                out.append(f'<text x="{2 * W - 175}" y="{30 + 14 * j}" fill="{c}">{name}</text>')
-    out.append(f'<text x="{m}" y="{H + 50}">ex4b to 20 mm: each tool against its own converged '
+                out.append(f'<text x="{m + 200 * (j % 4)}" y="{H + 50 + 14 * (j // 4)}" '
+                           f'fill="{c}">{name}</text>')
+    out.append(f'<text x="{m}" y="{H + 80}">ex4b to 20 mm: each tool against its own converged '
                'answer (vshell 48 divisions, CalculiX 16 x 16 x 3)</text>')
     out.append("</svg>")
     with open(path, "w") as f:
