@@ -15,6 +15,7 @@ for n in 16 8; do
     env "${env[@]}" /usr/bin/time -f "%e %U" -o "$tf" "$vshell" run "$root/data/scenes/ex4b_square_clamped.toml" \
       --set blank.divisions=$n --set numerics.time_integration=implicit --set numerics.start_refinement=0 \
       --set numerics.max_travel_increment_per_length=0.25 --set numerics.contact_events=false \
+      --set numerics.max_travel_increment_mm=0.5 \
       -o "$(mktemp -d)" > /dev/null 2>&1
     read -r wall user < "$tf"; rm -f "$tf"
     echo "$n,$th,$wall,$user,$load" >> "$out"

@@ -267,6 +267,7 @@ TEST(FullBlankForming, ClampedSquareMatchesQuarter) {
   s.process.punch_travel_mm = 4.0;
   s.process.output_travels_mm = {2.0, 4.0};
   s.numerics.max_travel_increment_per_length = 1e9;
+  s.numerics.max_travel_increment_mm = 0.5;  // the grid of docs/shell3d.md's table (scene: 0.25)
   expect_full_matches_quarter(s);
 }
 
