@@ -60,6 +60,18 @@ def profile(path):
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
+def profile_pairs(ref_path, other_path, rmin, rmax):
+    """(r0, ref, other) thickness strains at the points of the coarser of the two profiles (the
+    finer one interpolated linearly), rmin <= r0 <= rmax, points outside either profile dropped."""
+    rx, ry = profile(ref_path)
+    qx, qy = profile(other_path)
+    if len(rx) <= len(qx):
+        pts = [(r, e, interp(qx, qy, r)) for r, e in zip(rx, ry) if rmin - 1e-6 <= r <= rmax + 1e-6]
+    else:
+        pts = [(r, interp(rx, ry, r), e) for r, e in zip(qx, qy) if rmin - 1e-6 <= r <= rmax + 1e-6]
+    return [t for t in pts if not math.isnan(t[2]) and not math.isnan(t[1])]
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("ref")
@@ -93,15 +105,10 @@ def main():
             if not (pr and po):
                 out += f" | {ln}: missing"
                 continue
+            rmax = a.r0_max_mm * (math.sqrt(2.0) if ln == "diagonal" else 1.0)
+            pts = profile_pairs(pr, po, a.r0_min_mm, rmax)
             rx, ry = profile(pr)
             qx, qy = profile(po)
-            rmax = a.r0_max_mm * (math.sqrt(2.0) if ln == "diagonal" else 1.0)
-            rmin = a.r0_min_mm
-            if len(rx) <= len(qx):  # compare at the coarser profile's points
-                pts = [(r, e, interp(qx, qy, r)) for r, e in zip(rx, ry) if rmin - 1e-6 <= r <= rmax + 1e-6]
-            else:
-                pts = [(r, interp(rx, ry, r), e) for r, e in zip(qx, qy) if rmin - 1e-6 <= r <= rmax + 1e-6]
-            pts = [t for t in pts if not math.isnan(t[2]) and not math.isnan(t[1])]
             d = [(abs(o - e), r, o - e) for r, e, o in pts]
             worst = max(d)
             rms = math.sqrt(sum(x[2] ** 2 for x in d) / len(d))

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Work against precision for ex4b: every vshell run of results/wp/ against vshell's converged
 reference (results/wp/ref_n48), every CalculiX run against the CalculiX reference
-(results/ex4b_n16_l3_k25e3_mu3), and the ratio of run times at equal accuracy (section 5a).
+(results/ex4b_n16_l3_k25e3_mu3), and the ratio of run times at equal accuracy (README section 5, "At equal accuracy").
 
   work_precision.py RESULTS_DIR [--csv OUT.csv] [--svg OUT.svg]
 
@@ -19,7 +19,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare  # noqa: E402  (load_curve, strain_file, profile, interp)
+import compare  # noqa: E402  (load_curve, strain_file, profile_pairs, interp)
 
 TRAVELS = (5.0, 10.0, 15.0, 20.0)
 VSHELL_REF = "wp/ref_n48"
@@ -39,14 +39,10 @@ def errors(ref, other):
         F0, F1 = compare.interp(fx, fy, T), compare.interp(ox, oy, T)
         df = max(df, abs(100.0 * (F1 - F0) / F0))
         for line in ("x", "diagonal"):
-            rx, ry = compare.profile(compare.strain_file(ref, T, line))
-            qx, qy = compare.profile(compare.strain_file(other, T, line))
             rmax = 50.0 * (math.sqrt(2.0) if line == "diagonal" else 1.0)
-            if len(rx) <= len(qx):
-                pts = [(e, compare.interp(qx, qy, r)) for r, e in zip(rx, ry) if r <= rmax + 1e-6]
-            else:
-                pts = [(compare.interp(rx, ry, r), e) for r, e in zip(qx, qy) if r <= rmax + 1e-6]
-            d = [o - e for e, o in pts if not (math.isnan(e) or math.isnan(o))]
+            pts = compare.profile_pairs(compare.strain_file(ref, T, line),
+                                        compare.strain_file(other, T, line), 0.0, rmax)
+            d = [o - e for _, e, o in pts]
             rms_max = max(rms_max, math.sqrt(sum(x * x for x in d) / len(d)))
             abs_max = max(abs_max, max(abs(x) for x in d))
     return df, rms_max, abs_max
@@ -54,7 +50,7 @@ def errors(ref, other):
 
 def ccx_wall(path):
     with open(path) as f:
-        last = f.read().split("\n")[-2] if f else ""
+        last = [ln for ln in f if ln.strip()][-1]  # the last timing of the case
     fields = dict(kv.split("=", 1) for kv in last.split() if "=" in kv)
     return float(fields["wall_s"]), float(fields["cpu_user_s"]), int(fields.get("threads", "1"))
 

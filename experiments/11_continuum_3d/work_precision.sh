@@ -1,5 +1,5 @@
 #!/bin/bash
-# Work against precision for ex4b (issue 14's CalculiX ratio "at equal accuracy", section 5a):
+# Work against precision for ex4b (issue 14's CalculiX ratio; README section 5, "At equal accuracy"):
 # vshell at several meshes and step settings, each timed on the machine's threads, its curves kept
 # in results/wp/<label>/, its time in results/work_precision_vshell.csv; then work_precision.py
 # measures every run against vshell's own converged reference (results/wp/ref_n48) and every
@@ -12,7 +12,8 @@
 #   VSHELL=path/to/vshell DIVISIONS="8 12 16" VARIANTS="default s1_cap05" work_precision.sh
 #   DIVISIONS=16 VARIANTS="events_cap05 s3_cap05 ref5_cap05 theta1_cap05" work_precision.sh
 #
-# Runs one after another (never two timed runs at once); note the load average in time.csv.
+# Runs one after another (never two timed runs at once); the load average at each start goes into
+# work_precision_vshell.csv.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)

@@ -130,11 +130,11 @@ TEST(Forming3dSticking, MatchesAxisymmetricSolverAt8mm) {
 
 // The bundled clamped square (ex4b, 8 divisions, sticking) against the same run with 4x finer
 // travel steps and 8x finer strain steps (the study's step-converged setting), at its first output
-// (5 mm). With 0.5 mm steps (the scene's cap until 27 Nov 2026) the
-// force there was 1.1 % high (and 7 % at 2 mm): nodes that stick one after another in the
-// converged run stuck in the same step (experiments/11_continuum_3d, section 5, "At equal
-// accuracy"). Measured with the scene's 0.25 mm: +0.20 % in force, thickness strain along y = 0
-// within 0.0032 (at the pole node); with 0.5 mm the force check fails (+1.24 %).
+// (5 mm). With 0.5 mm steps (the scene's cap until 27 Nov 2026) the force there was 1.1 % high
+// (and 7 % at 2 mm): nodes that stick one after another in the converged run stuck in the same
+// step (experiments/11_continuum_3d, section 5, "At equal accuracy"). Measured with the scene's
+// 0.25 mm: +0.20 % in force, thickness strain along y = 0 within 0.0032 (at the pole node); with
+// 0.5 mm the force check fails (+1.24 %).
 TEST(Forming3dSticking, ClampedSquareSceneIsConvergedInTheStepAtItsFirstOutput) {
   Scene s = load_scene(std::string(VS_SOURCE_DIR) + "/data/scenes/ex4b_square_clamped.toml");
   s.process.punch_travel_mm = 5.0;
