@@ -329,7 +329,7 @@ std::vector<KeySpec> build_keys() {
       .applies_to = {"flat_punch", "die"};
   add(make("tool", "friction", kFloat, float_field<&tool, &ToolSpec::friction>(), "",
            closed(0, kInf),
-           "Coulomb coefficient with the sheet, at most 2; inf or \"sticking\" = no slip."))
+           "Coulomb coefficient with the sheet, at most 10; inf or \"sticking\" = no slip."))
       .sticking_alias = true;
   add(make("tool", "force_N", kFloat, float_field<&tool, &ToolSpec::force_N>(), "N", open_above(0),
            "Blank holder with a prescribed total (360 degree) force, shared over the flange nodes "

@@ -74,6 +74,13 @@ TEST(SceneErrors, OutOfRangeValuesNameKeyRangeAndUnit) {
             "5, 7, 9");
   EXPECT_EQ(scene_error(kMinimalScene + "friction = -0.1\n"),
             "scene.toml:10:12: tool.punch.friction = -0.1 is out of range [0, inf]");
+  // A continuum code's no-slip surrogate (mu = 3 or 10) is a scene the shell must run to be
+  // compared with it (experiments/11, section 5); above 10 it is "sticking".
+  EXPECT_EQ(scene_error(kMinimalScene + "friction = 3\n"), "loaded");
+  EXPECT_EQ(scene_error(kMinimalScene + "friction = 10\n"), "loaded");
+  EXPECT_EQ(scene_error(kMinimalScene + "friction = 10.5\n"),
+            "scene.toml:10:12: tool.punch.friction = 10.5 is above 10: no sliding contact has "
+            "such a coefficient; use \"sticking\" (no slip, treated exactly) instead");
   EXPECT_EQ(scene_error("[blank]\ngrading = nan\n"),
             "scene.toml:2:11: blank.grading = nan is out of range (0, inf)");
   EXPECT_EQ(scene_error("[process]\noutput_travels_mm = [1, -2]\n"),
