@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Work against precision for ex4b: every vshell run of results/wp/ against vshell's converged
-reference (results/wp/ref_n48), every CalculiX run against the CalculiX reference
+reference of the same problem (results/wp/ref_n48 for the scene's sticking punch, results/wp/
+mu3_ref_n48 for runs labelled mu3_*, Coulomb mu = 3, the problem CalculiX solves), every CalculiX run against the CalculiX reference
 (results/ex4b_n16_l3_k25e3_mu3), and the ratio of run times at equal accuracy (README section 5, "At equal accuracy").
 
   work_precision.py RESULTS_DIR [--csv OUT.csv] [--svg OUT.svg]
@@ -22,12 +23,24 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare  # noqa: E402  (load_curve, strain_file, profile_pairs, interp)
 
 TRAVELS = (5.0, 10.0, 15.0, 20.0)
-VSHELL_REF = "wp/ref_n48"
-CCX_REF = "ex4b_n16_l3_k25e3_mu3"
-# CalculiX runs of the same problem as the reference (friction mu = 3) that reached 20 mm, with
-# the run whose time.txt is used for the timing on the 2-core AMD EPYC, two threads.
-CCX_RUNS = {"ex4b_n12_l2_k5e4_mu3": "ex4b_n12_l2_k5e4_mu3_t2_zen5",
-            "ex4b_n16_l2_k25e3_mu3_t2_zen5": "ex4b_n16_l2_k25e3_mu3_t2_zen5"}
+# In results/wp/, behind the label's problem prefix (problem_of): the finest one there.
+VSHELL_REFS = ("ref_n48", "ref_n32")
+# The CalculiX problems: friction -> (reference, {run that reached 20 mm: the run whose
+# time.txt times it on the 2-core AMD EPYC, two threads}). mu = 3 stands in for the shell's
+# sticking punch (section 1).
+CCX_PROBLEMS = {
+    "3": ("ex4b_n16_l3_k25e3_mu3",
+          {"ex4b_n12_l2_k5e4_mu3": "ex4b_n12_l2_k5e4_mu3_t2_zen5",
+           "ex4b_n16_l2_k25e3_mu3_t2_zen5": "ex4b_n16_l2_k25e3_mu3_t2_zen5"}),
+    "0.2": ("ex4b_n16_l3_k25e3_mu02",
+            {"ex4b_n12_l2_k5e4_mu02_t2": "ex4b_n12_l2_k5e4_mu02_t2"}),
+}
+
+
+def ccx_problem(vshell_problem):
+    """The CalculiX problem a vshell problem prefix is compared with: "" (sticking) and "mu3_"
+    with mu = 3, "mu0.2_" with 0.2."""
+    return vshell_problem[2:-1] if vshell_problem else "3"
 
 
 def errors(ref, other):
@@ -48,6 +61,22 @@ def errors(ref, other):
     return df, rms_max, abs_max
 
 
+def problem_of(label):
+    """The problem prefix of a vshell label: "mu3_" for a Coulomb coefficient set by
+    work_precision.sh's FRICTION, "" for the scene's sticking punch."""
+    head = label.split("_", 1)[0]
+    return head + "_" if head.startswith("mu") else ""
+
+
+def vshell_reference(res, label):
+    """The converged vshell run of the label's problem: the finest of VSHELL_REFS there, or None."""
+    for ref in VSHELL_REFS:
+        d = os.path.join(res, "wp", problem_of(label) + ref)
+        if os.path.isdir(d):
+            return d
+    return None
+
+
 def ccx_wall(path):
     with open(path) as f:
         last = [ln for ln in f if ln.strip()][-1]  # the last timing of the case
@@ -60,19 +89,27 @@ def write_svg(rows, path):
     polyline per vshell variant (meshes in order), CalculiX runs as squares."""
     series = {}
     for r in rows:
-        key = "CalculiX" if r["tool"] == "ccx" else "vshell " + r["run"].split("_", 1)[1]
-        if r["run"].startswith("n16_s2"):
+        run = r["run"][len(problem_of(r["run"])):]
+        key = "vshell " + run.split("_", 1)[1]
+        if r["tool"] == "ccx":
+            key = "CalculiX mu = " + r["friction"]
+        elif problem_of(r["run"]):
+            key = "vshell mu = " + problem_of(r["run"])[2:-1] + ", " + run.split("_", 1)[1]
+        if r["tool"] == "vshell" and run.startswith("n16_s2"):
             key = "vshell 16 div., finer steps"
         series.setdefault(key, []).append(r)
-    series = {k: v for k, v in series.items() if k == "CalculiX" or len(v) > 1}  # no single runs
-    colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"]
+    series = {k: v for k, v in series.items() if k.startswith("CalculiX") or len(v) > 1}  # no single runs
+    colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
+               "#bcbd22", "#17becf", "#d62728"]
     W, H, m = 440, 330, 55
-    t_lo, t_hi = 0.3, 1000.0
+    t_lo, t_hi = 0.2, 1000.0
+    legend_rows = (len(series) + 3) // 4
+    height = H + 60 + 14 * legend_rows
     panels = [("force_err_pct", "max |dF| / F [%]", 0.1, 10.0),
-              ("rms_de3", "max RMS d eps_t", 0.002, 0.03)]
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * W}" height="{H + 85}" '
+              ("rms_de3", "max RMS d eps_t", 0.001, 0.03)]
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * W}" height="{height}" '
            'font-family="sans-serif" font-size="11">',
-           f'<rect width="{2 * W}" height="{H + 85}" fill="white"/>']
+           f'<rect width="{2 * W}" height="{height}" fill="white"/>']
     for k, (field, label, y_lo, y_hi) in enumerate(panels):
         x0 = k * W + m
 
@@ -87,7 +124,7 @@ def write_svg(rows, path):
                    f'height="{Y(y_lo) - Y(y_hi):.1f}" fill="none" stroke="black"/>')
         for t in (1, 10, 100, 1000):
             out.append(f'<text x="{X(t):.1f}" y="{Y(y_lo) + 14:.1f}" text-anchor="middle">{t}</text>')
-        for v in ((0.1, 0.3, 1, 3, 10) if field == "force_err_pct" else (0.002, 0.005, 0.01, 0.03)):
+        for v in ((0.1, 0.3, 1, 3, 10) if field == "force_err_pct" else (0.001, 0.002, 0.005, 0.01, 0.03)):
             out.append(f'<text x="{X(t_lo) - 4:.1f}" y="{Y(v) + 4:.1f}" text-anchor="end">{v:g}</text>')
             out.append(f'<line x1="{X(t_lo):.1f}" x2="{X(t_hi):.1f}" y1="{Y(v):.1f}" y2="{Y(v):.1f}" '
                        'stroke="#ddd"/>')
@@ -95,13 +132,14 @@ def write_svg(rows, path):
                    'text-anchor="middle">wall time [s], 2 threads</text>')
         out.append(f'<text x="{X(t_lo):.1f}" y="{Y(y_hi) - 6:.1f}">{label}</text>')
         for j, (name, pts) in enumerate(sorted(series.items())):
-            c = "black" if name == "CalculiX" else colours[j % len(colours)]
+            c = "black" if name == "CalculiX mu = 3" else colours[j % len(colours)]
+            ccx = name.startswith("CalculiX")
             pts = sorted(pts, key=lambda r: r["wall_s"])
-            if name != "CalculiX" and len(pts) > 1:
+            if not ccx and len(pts) > 1:
                 d = " ".join(f"{X(r['wall_s']):.1f},{Y(r[field]):.1f}" for r in pts)
                 out.append(f'<polyline points="{d}" fill="none" stroke="{c}"/>')
             for r in pts:
-                if name == "CalculiX":
+                if ccx:
                     out.append(f'<rect x="{X(r["wall_s"]) - 4:.1f}" y="{Y(r[field]) - 4:.1f}" '
                                f'width="8" height="8" fill="{c}"/>')
                 else:
@@ -110,8 +148,8 @@ def write_svg(rows, path):
             if k == 0:
                 out.append(f'<text x="{m + 200 * (j % 4)}" y="{H + 50 + 14 * (j // 4)}" '
                            f'fill="{c}">{name}</text>')
-    out.append(f'<text x="{m}" y="{H + 80}">ex4b to 20 mm: each tool against its own converged '
-               'answer (vshell 48 divisions, CalculiX 16 x 16 x 3)</text>')
+    out.append(f'<text x="{m}" y="{H + 50 + 14 * legend_rows}">ex4b to 20 mm: each tool against its own converged '
+               'answer of the same problem (vshell 48 divisions, CalculiX 16 x 16 x 3)</text>')
     out.append("</svg>")
     with open(path, "w") as f:
         f.write("\n".join(out) + "\n")
@@ -129,41 +167,49 @@ def main():
         for r in csv.DictReader(f):
             times[r["label"]] = r  # the last timing of a label wins
     rows = []
-    vref = os.path.join(res, VSHELL_REF)
-    for label, t in sorted(times.items(), key=lambda kv: (kv[1]["variant"], int(kv[1]["divisions"]))):
+    for label, t in sorted(times.items(), key=lambda kv: (problem_of(kv[0]), kv[1]["variant"],
+                                                          int(kv[1]["divisions"]))):
         d = os.path.join(res, "wp", label)
-        if label == os.path.basename(VSHELL_REF) or not os.path.isdir(d):
+        vref = vshell_reference(res, label)
+        if vref is None or os.path.basename(vref) == label or not os.path.isdir(d):
             continue
         df, rms, mx = errors(vref, d)
         rows.append(dict(tool="vshell", run=label, unknowns=int(t["unknowns"]), steps=int(t["steps"]),
                          wall_s=float(t["wall_s"]), cpu_s=float(t["cpu_user_s"]), threads=t["threads"],
-                         force_err_pct=df, rms_de3=rms, max_de3=mx))
-    cref = os.path.join(res, CCX_REF)
-    for run, timing in CCX_RUNS.items():
-        tpath = os.path.join(res, timing, "time.txt")
-        if not os.path.exists(tpath):
-            continue
-        wall, cpu, threads = ccx_wall(tpath)
-        df, rms, mx = errors(cref, os.path.join(res, run))
-        rows.append(dict(tool="ccx", run=run, unknowns=0, steps=0, wall_s=wall, cpu_s=cpu,
-                         threads=str(threads), force_err_pct=df, rms_de3=rms, max_de3=mx))
+                         force_err_pct=df, rms_de3=rms, max_de3=mx,
+                         friction=problem_of(label)[2:-1] or "sticking"))
+    for mu, (ref, runs) in CCX_PROBLEMS.items():
+        cref = os.path.join(res, ref)
+        for run, timing in runs.items():
+            tpath = os.path.join(res, timing, "time.txt")
+            if not os.path.isdir(cref) or not os.path.exists(tpath):
+                continue
+            wall, cpu, threads = ccx_wall(tpath)
+            df, rms, mx = errors(cref, os.path.join(res, run))
+            rows.append(dict(tool="ccx", run=run, unknowns=0, steps=0, wall_s=wall, cpu_s=cpu,
+                             threads=str(threads), force_err_pct=df, rms_de3=rms, max_de3=mx,
+                             friction=mu))
     print(f"{'tool':6} {'run':24} {'unknowns':>8} {'steps':>5} {'wall s':>7} {'cpu s':>7} "
           f"{'|dF| %':>7} {'rms de3':>8} {'max de3':>8}")
     for r in rows:
         print(f"{r['tool']:6} {r['run']:24} {r['unknowns']:8d} {r['steps']:5d} {r['wall_s']:7.2f} "
               f"{r['cpu_s']:7.2f} {r['force_err_pct']:7.3f} {r['rms_de3']:8.4f} {r['max_de3']:8.4f}")
-    print("\nAt equal accuracy: the fastest vshell run whose force and RMS thickness-strain errors "
-          "are both at most the CalculiX run's")
-    for c in (r for r in rows if r["tool"] == "ccx"):
-        ok = [r for r in rows if r["tool"] == "vshell" and r["force_err_pct"] <= c["force_err_pct"]
-              and r["rms_de3"] <= c["rms_de3"]]
-        if not ok:
-            print(f"  {c['run']}: no vshell run is as accurate")
-            continue
-        best = min(ok, key=lambda r: r["wall_s"])
-        print(f"  {c['run']} ({c['wall_s']:.0f} s, {c['force_err_pct']:.2f} %, {c['rms_de3']:.4f}): "
-              f"{best['run']} ({best['wall_s']:.2f} s, {best['force_err_pct']:.2f} %, "
-              f"{best['rms_de3']:.4f}): ratio {c['wall_s'] / best['wall_s']:.0f}x in wall time")
+    problems = sorted({problem_of(r["run"]) for r in rows if r["tool"] == "vshell"})
+    for prob in problems:
+        name = f"Coulomb mu = {prob[2:-1]}" if prob else "the scene's sticking punch"
+        print(f"\nAt equal accuracy, vshell with {name}: the fastest vshell run whose force and "
+              "RMS thickness-strain errors are both at most the CalculiX run's")
+        for c in (r for r in rows if r["tool"] == "ccx" and r["friction"] == ccx_problem(prob)):
+            ok = [r for r in rows if r["tool"] == "vshell" and problem_of(r["run"]) == prob
+                  and r["force_err_pct"] <= c["force_err_pct"] and r["rms_de3"] <= c["rms_de3"]]
+            if not ok:
+                print(f"  {c['run']}: no vshell run is as accurate")
+                continue
+            best = min(ok, key=lambda r: r["wall_s"])
+            print(f"  {c['run']} ({c['wall_s']:.0f} s, {c['force_err_pct']:.2f} %, "
+                  f"{c['rms_de3']:.4f}): {best['run']} ({best['wall_s']:.2f} s, "
+                  f"{best['force_err_pct']:.2f} %, {best['rms_de3']:.4f}): ratio "
+                  f"{c['wall_s'] / best['wall_s']:.0f}x in wall time")
     if a.svg:
         write_svg(rows, a.svg)
     if a.csv:

@@ -11,6 +11,9 @@
 #   work_precision.sh --table         # the table only (seconds)
 #   VSHELL=path/to/vshell DIVISIONS="8 12 16" VARIANTS="default s1_cap05" work_precision.sh
 #   DIVISIONS=16 VARIANTS="events_cap05 s3_cap05 ref5_cap05 theta1_cap05" work_precision.sh
+#   FRICTION=3 work_precision.sh --reference   # the problem CalculiX solves, Coulomb mu = 3 instead
+#                                              # of sticking: labels mu3_<label> (section 5, "The
+#                                              # same problem"); REFERENCES="48 32" sets the meshes
 #
 # Runs one after another (never two timed runs at once); the load average at each start goes into
 # work_precision_vshell.csv.
@@ -44,14 +47,19 @@ variant_sets() {
   esac
 }
 
+# FRICTION (a Coulomb coefficient, or unset: the scene's sticking punch) prefixes every label.
+friction=${FRICTION:-}
+prefix=${friction:+mu${friction}_}
+friction_set=${friction:+--set tool.punch.friction=$friction}
+
 run_one() {  # label divisions variant
-  local label=$1 n=$2 variant=$3 out tf load wall user
+  local label=$prefix$1 n=$2 variant=$3 out tf load wall user
   out=$(mktemp -d)
   tf=$(mktemp)
   load=$(cut -d' ' -f1 /proc/loadavg)
   # shellcheck disable=SC2046
   OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} /usr/bin/time -f "%e %U" -o "$tf" "$vshell" run "$scene" \
-    --set blank.divisions="$n" $(variant_sets "$variant") --output "$out/run" > "$out/log" 2>&1 ||
+    --set blank.divisions="$n" $friction_set $(variant_sets "$variant") --output "$out/run" > "$out/log" 2>&1 ||
     { echo "vshell failed for $label: $(tail -2 "$out/log")" >&2; exit 1; }
   read -r wall user < "$tf"
   rm -rf "${wp:?}/$label" && mkdir -p "$wp/$label"
@@ -69,10 +77,13 @@ EOF
 
 mode=${1:-sweep}
 if [ "$mode" = --reference ]; then
-  run_one ref_n48 48 s2_finer
-  run_one ref_n32 32 s2_finer
-  run_one n16_s2_fine 16 s2_fine    # the step error at 16 divisions
-  run_one n16_s2_finer 16 s2_finer
+  for n in ${REFERENCES:-48 32}; do
+    run_one "ref_n$n" "$n" s2_finer
+  done
+  if [ -z "$friction" ]; then
+    run_one n16_s2_fine 16 s2_fine    # the step error at 16 divisions
+    run_one n16_s2_finer 16 s2_finer
+  fi
 fi
 if [ "$mode" != --table ]; then
   for variant in ${VARIANTS:-default cap05 s1_cap05 s1_events_cap05}; do
