@@ -72,6 +72,15 @@ def profile_pairs(ref_path, other_path, rmin, rmax):
     return [t for t in pts if not math.isnan(t[2]) and not math.isnan(t[1])]
 
 
+def line_difference(ref, other, T, line, r0_max_mm=50.0):
+    """(RMS, largest |d|) of the thickness-strain difference other - ref at travel T along line
+    (x: r0 <= r0_max_mm; diagonal: r0 <= sqrt 2 r0_max_mm), at the coarser profile's points."""
+    rmax = r0_max_mm * (math.sqrt(2.0) if line == "diagonal" else 1.0)
+    pts = profile_pairs(strain_file(ref, T, line), strain_file(other, T, line), 0.0, rmax)
+    d = [o - e for _, e, o in pts]
+    return math.sqrt(sum(x * x for x in d) / len(d)), max(abs(x) for x in d)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("ref")

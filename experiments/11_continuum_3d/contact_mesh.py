@@ -8,12 +8,11 @@ same law's 32-division run.
 
 Python 3 standard library only.
 """
-import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare  # noqa: E402  (load_curve, strain_file, profile_pairs, interp)
+import compare  # noqa: E402  (load_curve, interp, line_difference)
 
 FORCE_TRAVELS = (2.0, 3.0, 5.0, 7.5, 10.0)
 PROFILE_TRAVELS = (5.0, 10.0)
@@ -34,14 +33,8 @@ def main():
             ox, oy = compare.load_curve(run)
             df = [100.0 * (compare.interp(ox, oy, T) / compare.interp(fx, fy, T) - 1.0)
                   for T in FORCE_TRAVELS]
-            rms = []
-            for T in PROFILE_TRAVELS:
-                for line in ("x", "diagonal"):
-                    rmax = 50.0 * (math.sqrt(2.0) if line == "diagonal" else 1.0)
-                    pts = compare.profile_pairs(compare.strain_file(ref, T, line),
-                                                compare.strain_file(run, T, line), 0.0, rmax)
-                    d = [o - e for _, e, o in pts]
-                    rms.append(math.sqrt(sum(x * x for x in d) / len(d)))
+            rms = [compare.line_difference(ref, run, T, line)[0]
+                   for T in PROFILE_TRAVELS for line in ("x", "diagonal")]
             print(f"{law:9} {n:3d}  " + " / ".join(f"{x:+.2f}" for x in df) + "    " +
                   " ".join(f"{x:.4f}" for x in rms))
 

@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Work against precision for ex4b: every vshell run of results/wp/ against vshell's converged
-reference of the same problem (results/wp/ref_n48 for the scene's sticking punch, results/wp/
-mu3_ref_n48 for runs labelled mu3_*, Coulomb mu = 3, the problem CalculiX solves), every CalculiX run against the CalculiX reference
-(results/ex4b_n16_l3_k25e3_mu3), and the ratio of run times at equal accuracy (README section 5, "At equal accuracy").
+reference of the same problem (results/wp/ref_n48 for the scene's sticking punch,
+results/wp/mu<MU>_ref_n48 or _n32 for runs labelled mu<MU>_*, Coulomb friction MU), every
+CalculiX run against the CalculiX reference of its problem (CCX_PROBLEMS: mu = 3, the stand-in
+for sticking, and mu = 0.2), and the ratio of run times at equal accuracy per problem (README
+section 5, "At equal accuracy" and "The contact decides the ratio").
 
   work_precision.py RESULTS_DIR [--csv OUT.csv] [--svg OUT.svg]
 
@@ -20,7 +22,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare  # noqa: E402  (load_curve, strain_file, profile_pairs, interp)
+import compare  # noqa: E402  (load_curve, interp, line_difference)
 
 TRAVELS = (5.0, 10.0, 15.0, 20.0)
 # In results/wp/, behind the label's problem prefix (problem_of): the finest one there.
@@ -37,10 +39,8 @@ CCX_PROBLEMS = {
 }
 
 
-def ccx_problem(vshell_problem):
-    """The CalculiX problem a vshell problem prefix is compared with: "" (sticking) and "mu3_"
-    with mu = 3, "mu0.2_" with 0.2."""
-    return vshell_problem[2:-1] if vshell_problem else "3"
+# The CalculiX problem that stands in for the shell's sticking punch.
+CCX_STICKING = "3"
 
 
 def errors(ref, other):
@@ -52,12 +52,9 @@ def errors(ref, other):
         F0, F1 = compare.interp(fx, fy, T), compare.interp(ox, oy, T)
         df = max(df, abs(100.0 * (F1 - F0) / F0))
         for line in ("x", "diagonal"):
-            rmax = 50.0 * (math.sqrt(2.0) if line == "diagonal" else 1.0)
-            pts = compare.profile_pairs(compare.strain_file(ref, T, line),
-                                        compare.strain_file(other, T, line), 0.0, rmax)
-            d = [o - e for _, e, o in pts]
-            rms_max = max(rms_max, math.sqrt(sum(x * x for x in d) / len(d)))
-            abs_max = max(abs_max, max(abs(x) for x in d))
+            rms, biggest = compare.line_difference(ref, other, T, line)
+            rms_max = max(rms_max, rms)
+            abs_max = max(abs_max, biggest)
     return df, rms_max, abs_max
 
 
@@ -66,6 +63,11 @@ def problem_of(label):
     work_precision.sh's FRICTION, "" for the scene's sticking punch."""
     head = label.split("_", 1)[0]
     return head + "_" if head.startswith("mu") else ""
+
+
+def friction_of(label):
+    """The punch friction of a vshell label: the Coulomb coefficient ("3", "0.2") or "sticking"."""
+    return problem_of(label)[2:-1] or "sticking"
 
 
 def vshell_reference(res, label):
@@ -90,13 +92,15 @@ def write_svg(rows, path):
     series = {}
     for r in rows:
         run = r["run"][len(problem_of(r["run"])):]
-        key = "vshell " + run.split("_", 1)[1]
+        variant = run.split("_", 1)[-1]
         if r["tool"] == "ccx":
             key = "CalculiX mu = " + r["friction"]
-        elif problem_of(r["run"]):
-            key = "vshell mu = " + problem_of(r["run"])[2:-1] + ", " + run.split("_", 1)[1]
-        if r["tool"] == "vshell" and run.startswith("n16_s2"):
+        elif run.startswith("n16_s2"):
             key = "vshell 16 div., finer steps"
+        elif r["friction"] == "sticking":
+            key = "vshell " + variant
+        else:
+            key = "vshell mu = " + r["friction"] + ", " + variant
         series.setdefault(key, []).append(r)
     series = {k: v for k, v in series.items() if k.startswith("CalculiX") or len(v) > 1}  # no single runs
     colours = ["#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f",
@@ -177,7 +181,7 @@ def main():
         rows.append(dict(tool="vshell", run=label, unknowns=int(t["unknowns"]), steps=int(t["steps"]),
                          wall_s=float(t["wall_s"]), cpu_s=float(t["cpu_user_s"]), threads=t["threads"],
                          force_err_pct=df, rms_de3=rms, max_de3=mx,
-                         friction=problem_of(label)[2:-1] or "sticking"))
+                         friction=friction_of(label)))
     for mu, (ref, runs) in CCX_PROBLEMS.items():
         cref = os.path.join(res, ref)
         for run, timing in runs.items():
@@ -194,13 +198,13 @@ def main():
     for r in rows:
         print(f"{r['tool']:6} {r['run']:24} {r['unknowns']:8d} {r['steps']:5d} {r['wall_s']:7.2f} "
               f"{r['cpu_s']:7.2f} {r['force_err_pct']:7.3f} {r['rms_de3']:8.4f} {r['max_de3']:8.4f}")
-    problems = sorted({problem_of(r["run"]) for r in rows if r["tool"] == "vshell"})
-    for prob in problems:
-        name = f"Coulomb mu = {prob[2:-1]}" if prob else "the scene's sticking punch"
+    for mu in sorted({r["friction"] for r in rows if r["tool"] == "vshell"}, reverse=True):
+        name = "the scene's sticking punch" if mu == "sticking" else f"Coulomb mu = {mu}"
+        ccx_mu = CCX_STICKING if mu == "sticking" else mu
         print(f"\nAt equal accuracy, vshell with {name}: the fastest vshell run whose force and "
               "RMS thickness-strain errors are both at most the CalculiX run's")
-        for c in (r for r in rows if r["tool"] == "ccx" and r["friction"] == ccx_problem(prob)):
-            ok = [r for r in rows if r["tool"] == "vshell" and problem_of(r["run"]) == prob
+        for c in (r for r in rows if r["tool"] == "ccx" and r["friction"] == ccx_mu):
+            ok = [r for r in rows if r["tool"] == "vshell" and r["friction"] == mu
                   and r["force_err_pct"] <= c["force_err_pct"] and r["rms_de3"] <= c["rms_de3"]]
             if not ok:
                 print(f"  {c['run']}: no vshell run is as accurate")

@@ -13,7 +13,8 @@
 #   DIVISIONS=16 VARIANTS="events_cap05 s3_cap05 ref5_cap05 theta1_cap05" work_precision.sh
 #   FRICTION=3 work_precision.sh --reference   # the problem CalculiX solves, Coulomb mu = 3 instead
 #                                              # of sticking: labels mu3_<label> (section 5, "The
-#                                              # same problem"); REFERENCES="48 32" sets the meshes
+#                                              # contact decides the ratio"); REFERENCES="48 32"
+#                                              # sets the meshes
 #
 # Runs one after another (never two timed runs at once); the load average at each start goes into
 # work_precision_vshell.csv.
